@@ -1,0 +1,66 @@
+// Dictionary.hpp: read the coupling settings of a case.
+//
+// The case files are OpenFOAM dictionaries (constant/couplingProperties), but
+// coupling/ must not depend on OpenFOAM, so this is a small reader for the
+// subset we use:  `key value ... ;`  and  `name { ... }`, with // and /* */
+// comments; the FoamFile header block is read like any other sub-dictionary.
+// Every getter that fails names the file, the full key path and what was
+// expected, so bad input never surfaces as a bare exception.
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Vec3.hpp"
+
+namespace granair {
+
+class Dictionary {
+public:
+    Dictionary() = default;
+    // source: a file name (or description) used in every error message.
+    explicit Dictionary(std::string source, std::string path = "");
+
+    static Dictionary fromFile(const std::string& fileName);
+    static Dictionary fromString(const std::string& text, const std::string& source);
+
+    bool has(const std::string& key) const;
+    bool isDict(const std::string& key) const;
+    const Dictionary& subDict(const std::string& key) const;
+    std::vector<std::string> keys() const;
+
+    // Raw tokens of an entry, e.g. {"(", "0", "0", "-9.81", ")"}.
+    const std::vector<std::string>& tokens(const std::string& key) const;
+
+    std::string getString(const std::string& key) const;
+    std::string getString(const std::string& key, const std::string& fallback) const;
+    double getDouble(const std::string& key) const;
+    double getDouble(const std::string& key, double fallback) const;
+    // Range-checked: lo <= value <= hi, with the range in the error message.
+    double getDouble(const std::string& key, double lo, double hi) const;
+    long getInt(const std::string& key) const;
+    long getInt(const std::string& key, long fallback) const;
+    bool getBool(const std::string& key, bool fallback) const;
+    Vec3 getVec3(const std::string& key) const;
+    Vec3 getVec3(const std::string& key, const Vec3& fallback) const;
+
+    // Programmatic construction (tests, defaults).
+    void set(const std::string& key, const std::string& value);
+    Dictionary& addDict(const std::string& key);
+
+    const std::string& source() const { return source_; }
+    // Where a key lives, for messages: "file 'x', key 'drag.type'".
+    std::string where(const std::string& key) const;
+
+private:
+    std::string source_;
+    std::string path_;  // dotted path of this sub-dictionary, "" at top level
+    std::map<std::string, std::vector<std::string>> entries_;
+    std::map<std::string, std::shared_ptr<Dictionary>> dicts_;
+    std::vector<std::string> order_;
+
+    friend class DictionaryParser;
+};
+
+}  // namespace granair

@@ -1,0 +1,41 @@
+// TimeSeriesWriter.hpp: scalar time series of a run (discharged mass, mass
+// flow rate, outlet pressure gradient, ...), written as HDF5 and CSV.
+//
+// Values are global scalars that the caller has already reduced; only the
+// writing rank (rank 0 of the communicator) touches the files. The CSV is
+// flushed every row so a long run can be plotted while it goes; the HDF5 file
+// holds one extendible 1-D dataset per column plus the column units as
+// attributes.
+#pragma once
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace granair {
+
+struct Column {
+    std::string name;  // e.g. "mass_flow_kg_s"
+    std::string unit;  // e.g. "kg/s"
+};
+
+class TimeSeriesWriter {
+public:
+    // stem: path without extension; writes stem.csv and stem.h5.
+    TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::vector<Column> columns);
+    ~TimeSeriesWriter();
+    TimeSeriesWriter(const TimeSeriesWriter&) = delete;
+    TimeSeriesWriter& operator=(const TimeSeriesWriter&) = delete;
+
+    // One value per column, in column order. Collective only in the sense that
+    // every rank may call it; non-writing ranks ignore the values.
+    void append(const std::vector<double>& row);
+    void close();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace granair
