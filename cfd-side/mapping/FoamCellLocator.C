@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+    granair: FoamCellLocator (see FoamCellLocator.H)
+\*---------------------------------------------------------------------------*/
+#include "mapping/FoamCellLocator.H"
+
+namespace Foam
+{
+namespace granair
+{
+
+static inline point toPoint(const ::granair::Vec3& x)
+{
+    return point(x.x(), x.y(), x.z());
+}
+
+FoamCellLocator::FoamCellLocator(const fvMesh& mesh)
+:
+    mesh_(mesh)
+{
+    // Collective: build the tet decomposition and the cell octree now.
+    (void)mesh_.tetBasePtIs();
+    if (mesh_.nCells())
+    {
+        (void)mesh_.cellTree();
+        const boundBox bb(mesh_.points(), false);
+        bounds_.lo = ::granair::Vec3(bb.min().x(), bb.min().y(), bb.min().z());
+        bounds_.hi = ::granair::Vec3(bb.max().x(), bb.max().y(), bb.max().z());
+    }
+    (void)mesh_.cellCells();
+}
+
+int FoamCellLocator::nCells() const
+{
+    return mesh_.nCells();
+}
+
+int FoamCellLocator::findCell(const ::granair::Vec3& x, int hint) const
+{
+    if (!x.allFinite() || !bounds_.contains(x))
+    {
+        return -1;
+    }
+    const point p(toPoint(x));
+    if (hint >= 0 && hint < mesh_.nCells())
+    {
+        if (mesh_.pointInCell(p, hint, polyMesh::CELL_TETS))
+        {
+            return hint;
+        }
+        for (const label nb : mesh_.cellCells()[hint])
+        {
+            if (mesh_.pointInCell(p, nb, polyMesh::CELL_TETS))
+            {
+                return nb;
+            }
+        }
+    }
+    return mesh_.findCell(p, polyMesh::CELL_TETS);
+}
+
+double FoamCellLocator::cellVolume(int cell) const
+{
+    return mesh_.V()[cell];
+}
+
+::granair::Vec3 FoamCellLocator::cellCentre(int cell) const
+{
+    const point& c = mesh_.C()[cell];
+    return ::granair::Vec3(c.x(), c.y(), c.z());
+}
+
+void FoamCellLocator::cellNeighbours(int cell, std::vector<int>& out) const
+{
+    const labelList& nb = mesh_.cellCells()[cell];
+    out.assign(nb.begin(), nb.end());
+}
+
+::granair::Box FoamCellLocator::bounds() const
+{
+    return bounds_;
+}
+
+} // namespace granair
+} // namespace Foam

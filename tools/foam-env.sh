@@ -1,0 +1,19 @@
+# foam-env.sh: OpenFOAM's runtime environment for granair (sourced by the
+# launcher and by case scripts; users never need to source it by hand).
+# Debian's OpenFOAM has no etc/ directory; its programs read etc/controlDict
+# from WM_PROJECT_DIR, which we point at the header tree the installer made.
+_granair_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+export GRANAIR_ROOT="${GRANAIR_ROOT:-$_granair_root}"
+export GRANAIR_BUILD="${GRANAIR_BUILD:-$GRANAIR_ROOT/build}"
+export WM_PROJECT_DIR="${GRANAIR_OPENFOAM_SRC:-$GRANAIR_ROOT/.cache/openfoam-OpenFOAM-v1912.200626}"
+export WM_PROJECT=OpenFOAM WM_PROJECT_VERSION=v1912
+export FOAM_SIGFPE=true          # stop on floating-point exceptions (NaN) rather than run on
+export PATH="$GRANAIR_BUILD/bin:$PATH"
+# Open MPI: allow root (CI, containers) and more ranks than cores.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+if [ ! -f "$WM_PROJECT_DIR/etc/controlDict" ]; then
+  echo "granair: OpenFOAM runtime tree missing at $WM_PROJECT_DIR; run ./granair deps" >&2
+  return 1 2>/dev/null || exit 1
+fi
+unset _granair_root
