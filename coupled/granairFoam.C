@@ -4,16 +4,25 @@
 Description
     The coupled DEM-CFD executable. Every MPI rank runs one LIGGGHTS
     subdomain (opened as a library on MPI_COMM_WORLD) and one OpenFOAM
-    subdomain, co-located in this process.
+    subdomain, co-located in this process (see CoupledRun.H).
 
     Usage:  mpirun -np N granairFoam -case <dir> -parallel
             granairFoam -case <dir>                  (serial)
+
+    Errors: an error raised on all ranks together (bad input found by every
+    rank, or raised collectively) is printed once and the job ends with exit
+    code 1; an error on one rank only aborts the whole job (MPI_Abort), so no
+    rank is ever left waiting. LIGGGHTS and OpenFOAM errors end the job
+    themselves, with their message on stderr.
 \*---------------------------------------------------------------------------*/
 #include "fvCFD.H"
 #include "foamRuntime.H"
 
+#include "coupled/CoupledRun.H"
+#include "core/Error.hpp"
+
 #include <mpi.h>
-#include "library.h"
+#include <iostream>
 
 int main(int argc, char* argv[])
 {
@@ -22,11 +31,11 @@ int main(int argc, char* argv[])
 
     #include "setRootCase.H"
 
-    // Serial OpenFOAM does not initialise MPI; LIGGGHTS needs it.
+    // Serial OpenFOAM does not initialise MPI; LIGGGHTS and the coupling
+    // layer need it.
     int mpiInitialised = 0;
     MPI_Initialized(&mpiInitialised);
-    const bool ownMpi = !mpiInitialised;
-    if (ownMpi)
+    if (!mpiInitialised)
     {
         MPI_Init(&argc, &argv);
     }
@@ -34,38 +43,39 @@ int main(int argc, char* argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    const fileName caseDir = runTime.path();
-    const fileName demDir = runTime.globalPath()/"dem";
-    const fileName logDir = runTime.globalPath()/"log";
-    if (Pstream::master())
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    int rc = 0;
+    try
     {
-        mkDir(logDir);
+        Foam::granair::CoupledRun run(runTime, mesh);
+        run.run();
+        run.finish();
     }
-    MPI_Barrier(MPI_COMM_WORLD);
-
-    const std::string screen = logDir/"screen.liggghts";
-    const std::string log = logDir/"log.liggghts";
-    const char* largv[] =
-        {"liggghts", "-log", log.c_str(), "-screen", screen.c_str(), nullptr};
-    void* lmp = nullptr;
-    lammps_open(5, const_cast<char**>(largv), MPI_COMM_WORLD, &lmp);
-    const std::string script = demDir/"in.liggghts";
-    if (!isFile(script))
+    catch (const ::granair::CollectiveError& e)
     {
-        FatalErrorInFunction << "DEM input script " << script << " not found" << exit(FatalError);
+        if (rank == 0)
+        {
+            std::cerr << "\ngranairFoam: ERROR: " << e.what() << std::endl;
+        }
+        rc = 1;
     }
-    lammps_file(lmp, const_cast<char*>(script.c_str()));
-
-    const label nParticles = lammps_get_natoms(lmp);
-    Info<< "granairFoam: CFD mesh " << returnReduce(mesh.nCells(), sumOp<label>())
-        << " cells on " << Pstream::nProcs() << " rank(s); DEM "
-        << nParticles << " particles" << nl;
-
-    lammps_close(lmp);
-    Info<< "End" << nl;
-    if (ownMpi)
+    catch (const std::exception& e)
     {
+        std::cerr << "\ngranairFoam: ERROR (rank " << rank << "): " << e.what() << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+
+    Info<< (rc ? "Stopped on error" : "End") << nl << endl;
+    if (rc != 0)
+    {
+        // Not through OpenFOAM's exit: its parallel shutdown exits with 0.
         MPI_Finalize();
+        std::exit(rc);
+    }
+    if (!Pstream::parRun())
+    {
+        MPI_Finalize();    // we initialised MPI; parallel OpenFOAM finalises it itself
     }
     return 0;
 }

@@ -24,7 +24,7 @@ void raiseIfAny(MPI_Comm comm, const std::string& localMessage) {
     MPI_Comm_size(comm, &size);
     std::string msg(buf.begin(), buf.end());
     if (size > 1) msg = "(rank " + std::to_string(first) + ") " + msg;
-    throw InputError(msg);
+    throw CollectiveError(msg);
 }
 
 }  // namespace granair

@@ -20,6 +20,13 @@ public:
     using Error::Error;
 };
 
+// CollectiveError: raised on every rank together with the same message (see
+// Collective.hpp), so the job can end cleanly instead of aborting.
+class CollectiveError : public InputError {
+public:
+    using InputError::InputError;
+};
+
 // Build a message from streamable parts: fail<InputError>("file ", f, ": key ", k).
 template <class E = Error, class... Parts>
 [[noreturn]] void fail(const Parts&... parts) {

@@ -1,0 +1,30 @@
+// CouplingSettings.cpp: see CouplingSettings.hpp.
+#include "coupler/CouplingSettings.hpp"
+
+namespace granair {
+
+CouplingSettings CouplingSettings::read(const Dictionary& dict) {
+    CouplingSettings s;
+    s.couplingInterval = static_cast<int>(dict.getDouble("couplingInterval", 1, 1e9));
+    if (dict.getDouble("couplingInterval") != s.couplingInterval)
+        fail<InputError>(dict.where("couplingInterval"), ": expected a whole number of DEM steps");
+    s.airOn = dict.getBool("air", true);
+    if (dict.has("coarseGrainingFactor"))
+        s.coarseGrainingFactor = dict.getDouble("coarseGrainingFactor", 1.0, 1000.0);
+    if (dict.has("voidFractionFloor"))
+        s.voidFractionFloor = dict.getDouble("voidFractionFloor", 1e-3, 0.99);
+    s.gravity = dict.getVec3("gravity", s.gravity);
+    if (dict.has("forces")) {
+        const Dictionary& f = dict.subDict("forces");
+        s.dragForce = f.getBool("drag", true);
+        s.pressureGradientForce = f.getBool("pressureGradient", true);
+        s.buoyancyForce = f.getBool("buoyancy", true);
+    }
+    if (s.airOn) {
+        s.drag = dragLaws().create(dict.subDict("drag"));
+        s.voidFraction = voidFractionModels().create(dict.subDict("voidFraction"));
+    }
+    return s;
+}
+
+}  // namespace granair

@@ -1,0 +1,37 @@
+// CouplingSettings.hpp: the coupling settings of a case, read from the case's
+// constant/couplingProperties (one dictionary for everything the coupling
+// layer needs; the air's own properties stay in OpenFOAM's files).
+//
+//   couplingInterval    50;          // DEM steps per CFD step (N), >= 1
+//   air                 on;          // off: DEM-only reference run, same case
+//   coarseGrainingFactor 1;          // parcel = s^3 primary particles, s >= 1
+//   voidFractionFloor   0.3;         // eps is floored here (hits are counted)
+//   gravity             (0 0 -9.81); // [m/s2], for the particles' buoyancy
+//   forces { drag on; pressureGradient on; buoyancy on; }
+//   drag         { type ErgunGidaspow; ... }   // coupling/drag registry
+//   voidFraction { type centre; ... }          // coupling/voidfraction registry
+#pragma once
+#include <memory>
+
+#include "core/Dictionary.hpp"
+#include "drag/DragLaw.hpp"
+#include "voidfraction/VoidFractionModel.hpp"
+
+namespace granair {
+
+struct CouplingSettings {
+    int couplingInterval = 1;
+    bool airOn = true;
+    double coarseGrainingFactor = 1.0;
+    double voidFractionFloor = 0.3;
+    Vec3 gravity{0, 0, -9.81};
+    bool dragForce = true;
+    bool pressureGradientForce = true;
+    bool buoyancyForce = true;
+    std::shared_ptr<const DragLaw> drag;
+    std::shared_ptr<const VoidFractionModel> voidFraction;
+
+    static CouplingSettings read(const Dictionary& dict);
+};
+
+}  // namespace granair

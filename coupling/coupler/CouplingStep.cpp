@@ -1,0 +1,118 @@
+// CouplingStep.cpp: see CouplingStep.hpp for the equations.
+#include "coupler/CouplingStep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.hpp"
+
+namespace granair {
+
+CouplingStep::CouplingStep(const CouplingSettings& settings, const CellLocator& mesh, FluidProperties fluid)
+    : settings_(settings), mesh_(mesh), fluid_(fluid) {
+    if (!settings_.drag || !settings_.voidFraction)
+        fail("CouplingStep: drag law and void-fraction model are required when the air is on");
+}
+
+void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, const double* Ucell,
+                                    double* eps, double* K, double* Us) {
+    const int nCells = mesh_.nCells();
+    const std::size_t np = owned.size();
+    const double s = settings_.coarseGrainingFactor;
+
+    // Stencils and solid volume.
+    offset_.assign(1, 0);
+    offset_.reserve(np + 1);
+    weights_.clear();
+    volume_.resize(np);
+    velocity_.resize(np);
+    solid_.assign(nCells, 0.0);
+    for (std::size_t p = 0; p < np; ++p) {
+        const OwnedParticle& op = owned[p];
+        const double r = op.state.radius;
+        volume_[p] = 4.0 / 3.0 * M_PI * r * r * r;
+        velocity_[p] = op.state.v;
+        settings_.voidFraction->stencil(mesh_, op.state, op.cell, scratch_);
+        for (const CellWeight& cw : scratch_) {
+            solid_[cw.cell] += cw.weight * volume_[p];
+            weights_.push_back(cw);
+        }
+        offset_.push_back(static_cast<std::int64_t>(weights_.size()));
+    }
+
+    // Void fraction with its floor.
+    stats_ = CouplingStepStats{};
+    for (int c = 0; c < nCells; ++c) {
+        const double raw = 1.0 - solid_[c] / mesh_.cellVolume(c);
+        stats_.minRawVoidFraction = std::min(stats_.minRawVoidFraction, raw);
+        if (raw < settings_.voidFractionFloor) {
+            eps[c] = settings_.voidFractionFloor;
+            ++stats_.floorHits;
+        } else {
+            eps[c] = raw;
+        }
+    }
+
+    // Drag coefficient per particle, then K and Us per cell.
+    beta_.resize(np);
+    sumBeta_.assign(nCells, 0.0);
+    std::fill(Us, Us + 3 * static_cast<std::size_t>(nCells), 0.0);
+    for (std::size_t p = 0; p < np; ++p) {
+        Vec3 uf = Vec3::Zero();
+        double epsP = 0.0;
+        for (std::int64_t k = offset_[p]; k < offset_[p + 1]; ++k) {
+            const CellWeight& cw = weights_[k];
+            uf += cw.weight * Vec3(Ucell[3 * cw.cell], Ucell[3 * cw.cell + 1], Ucell[3 * cw.cell + 2]);
+            epsP += cw.weight * eps[cw.cell];
+        }
+        const double dParcel = 2.0 * owned[p].state.radius;
+        double b = 0.0;
+        if (settings_.dragForce) {
+            try {
+                b = parcelBeta(*settings_.drag, dParcel, s, epsP, (uf - velocity_[p]).norm(), fluid_);
+            } catch (const InputError& e) {
+                fail<InputError>("particle ", owned[p].state.id, " at (", owned[p].state.x.transpose(),
+                                 "): ", e.what());
+            }
+        }
+        beta_[p] = b;
+        for (std::int64_t k = offset_[p]; k < offset_[p + 1]; ++k) {
+            const CellWeight& cw = weights_[k];
+            const double wb = cw.weight * b;
+            sumBeta_[cw.cell] += wb;
+            for (int a = 0; a < 3; ++a) Us[3 * cw.cell + a] += wb * velocity_[p][a];
+        }
+    }
+    for (int c = 0; c < nCells; ++c) {
+        K[c] = sumBeta_[c] / mesh_.cellVolume(c);
+        if (sumBeta_[c] > 0)
+            for (int a = 0; a < 3; ++a) Us[3 * c + a] /= sumBeta_[c];
+    }
+}
+
+void CouplingStep::cellsToParticles(const double* Ucell, const double* gradPcell,
+                                    std::vector<double>& forces) const {
+    const std::size_t np = beta_.size();
+    forces.assign(3 * np, 0.0);
+    drag_.assign(3 * np, 0.0);
+    const Vec3 buoyancyPerVolume = -fluid_.rho * settings_.gravity;
+    for (std::size_t p = 0; p < np; ++p) {
+        Vec3 uf = Vec3::Zero(), gp = Vec3::Zero();
+        for (std::int64_t k = offset_[p]; k < offset_[p + 1]; ++k) {
+            const CellWeight& cw = weights_[k];
+            const int c = cw.cell;
+            uf += cw.weight * Vec3(Ucell[3 * c], Ucell[3 * c + 1], Ucell[3 * c + 2]);
+            gp += cw.weight * Vec3(gradPcell[3 * c], gradPcell[3 * c + 1], gradPcell[3 * c + 2]);
+        }
+        const Vec3 drag = beta_[p] * (uf - velocity_[p]);
+        Vec3 f = drag;
+        if (settings_.pressureGradientForce) f -= volume_[p] * gp;
+        if (settings_.buoyancyForce) f += volume_[p] * buoyancyPerVolume;
+        for (int a = 0; a < 3; ++a) {
+            forces[3 * p + a] = f[a];
+            drag_[3 * p + a] = drag[a];
+        }
+    }
+}
+
+}  // namespace granair

@@ -1,0 +1,74 @@
+// CouplingStep.hpp: what the particles give the air and the air gives back,
+// on the rank that owns the particles' cells.
+//
+// One coupling step, after the exchange has brought each particle to the
+// rank owning its cell (exchange/ParticleExchange):
+//   1. particlesToCells(): each particle's stencil (voidfraction model) ->
+//      solid volume per cell -> void fraction eps (floored); drag
+//      coefficient beta per particle (drag law, at the air velocity of the
+//      previous step and the new eps); per cell
+//          K  = sum_p w_pc beta_p / V_c                      [kg/(m3 s)]
+//          Us = sum_p w_pc beta_p v_p / sum_p w_pc beta_p     [m/s]
+//   2. the air solver advances with K implicit (cfd-side).
+//   3. cellsToParticles(): force on each particle
+//          F_p = beta_p (U_f,p - v_p) - V_p grad(p)_p - V_p rho_f g
+//      with U_f,p = sum_c w_pc U_c and grad(p)_p = sum_c w_pc grad(p)_c.
+// Because the same weights w_pc carry K/Us to the cells and the air velocity
+// back, sum_p drag_p = sum_c K_c V_c (U_c - Us_c): the momentum the air
+// loses is exactly the drag the particles gain.
+//
+// Parcels (coarse-graining factor s) hold s^3 primary particles of diameter
+// 2 radius / s; beta is s^3 times the primary one (drag/DragLaw.hpp).
+// Cell arrays are plain contiguous doubles (3 per cell for vectors), so the
+// cfd-side can pass OpenFOAM's field storage without copies.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "coupler/CouplingSettings.hpp"
+#include "exchange/ParticleExchange.hpp"
+#include "mapping/CellLocator.hpp"
+
+namespace granair {
+
+struct CouplingStepStats {
+    std::int64_t floorHits = 0;       // cells floored in the last step (this rank)
+    double minRawVoidFraction = 1.0;  // smallest eps before flooring, last step (this rank)
+};
+
+class CouplingStep {
+public:
+    CouplingStep(const CouplingSettings& settings, const CellLocator& mesh, FluidProperties fluid);
+
+    // Step 1. Ucell: air velocity per local cell (3 doubles each) from the
+    // previous air step. Writes eps, K (1 per cell) and Us (3 per cell).
+    void particlesToCells(const std::vector<OwnedParticle>& owned, const double* Ucell,
+                          double* eps, double* K, double* Us);
+
+    // Step 3. Ucell, gradPcell: new air velocity and pressure gradient [Pa/m]
+    // per cell. Writes 3 doubles per owned particle (same order) into forces.
+    void cellsToParticles(const double* Ucell, const double* gradPcell, std::vector<double>& forces) const;
+
+    // Per-particle drag part only of the last cellsToParticles (3 per particle), for tests/output.
+    const std::vector<double>& dragForces() const { return drag_; }
+
+    const CouplingStepStats& stats() const { return stats_; }
+
+private:
+    const CouplingSettings& settings_;
+    const CellLocator& mesh_;
+    FluidProperties fluid_;
+    // Stencils of the particles of the last step, CSR layout.
+    std::vector<std::int64_t> offset_;
+    std::vector<CellWeight> weights_;
+    std::vector<double> beta_;     // per particle [kg/s]
+    std::vector<double> volume_;   // per particle [m3]
+    std::vector<Vec3> velocity_;   // per particle [m/s]
+    std::vector<double> solid_;    // per cell, workspace
+    std::vector<double> sumBeta_;  // per cell, workspace
+    mutable std::vector<double> drag_;
+    std::vector<CellWeight> scratch_;
+    CouplingStepStats stats_;
+};
+
+}  // namespace granair

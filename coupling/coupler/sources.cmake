@@ -1,0 +1,1 @@
+list(APPEND GRANAIR_COUPLING_SOURCES coupler/BedDrag.cpp coupler/CouplingSettings.cpp coupler/CouplingStep.cpp)

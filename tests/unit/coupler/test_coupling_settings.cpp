@@ -1,0 +1,43 @@
+// CouplingSettings: defaults, and errors that name the file and key.
+#include <catch2/catch.hpp>
+
+#include "coupler/CouplingSettings.hpp"
+
+using Catch::Matchers::Contains;
+using granair::CouplingSettings;
+using granair::Dictionary;
+
+TEST_CASE("coupling settings read the case dictionary", "[coupler]") {
+    auto d = Dictionary::fromString(R"(
+        couplingInterval 50; coarseGrainingFactor 2; voidFractionFloor 0.35;
+        drag { type ErgunGidaspow; } voidFraction { type centre; }
+        forces { buoyancy off; })", "constant/couplingProperties");
+    auto s = CouplingSettings::read(d);
+    CHECK(s.couplingInterval == 50);
+    CHECK(s.coarseGrainingFactor == 2);
+    CHECK(s.voidFractionFloor == 0.35);
+    CHECK(s.airOn);
+    CHECK(s.drag->name() == "ErgunGidaspow");
+    CHECK(s.voidFraction->name() == "centre");
+    CHECK_FALSE(s.buoyancyForce);
+    CHECK(s.pressureGradientForce);
+}
+
+TEST_CASE("coupling settings reject bad values naming file and key", "[coupler]") {
+    const std::string base = "drag { type ErgunGidaspow; } voidFraction { type centre; } ";
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(base, "cp")),
+                      Contains("cp") && Contains("couplingInterval") && Contains("missing"));
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(base + "couplingInterval 0;", "cp")),
+                      Contains("couplingInterval") && Contains("out of range"));
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(base + "couplingInterval 2.5;", "cp")),
+                      Contains("whole number"));
+    CHECK_THROWS_WITH(
+        CouplingSettings::read(Dictionary::fromString(base + "couplingInterval 5; voidFractionFloor 1.5;", "cp")),
+        Contains("voidFractionFloor") && Contains("out of range"));
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(
+                          "couplingInterval 5; drag { type Nope; } voidFraction { type centre; }", "cp")),
+                      Contains("unknown drag law 'Nope'") && Contains("ErgunGidaspow"));
+    // with the air off no models are needed
+    auto off = CouplingSettings::read(Dictionary::fromString("couplingInterval 5; air off;", "cp"));
+    CHECK_FALSE(off.airOn);
+}

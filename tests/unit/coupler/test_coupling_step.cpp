@@ -1,0 +1,157 @@
+// CouplingStep: the particle -> cell -> particle path of one coupling step on
+// a structured mesh. Asserts: void fraction from particle volumes; momentum
+// given to the air equals the drag on the particles; the Ergun pressure drop
+// carried by drag + pressure-gradient force in a uniform bed; coarse-grained
+// parcels; the floor and its count.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "coupler/CouplingStep.hpp"
+#include "mapping/BoxMesh.hpp"
+
+using namespace granair;
+
+namespace {
+
+CouplingSettings settings(const std::string& drag, const std::string& vf, double s = 1.0) {
+    auto d = Dictionary::fromString("couplingInterval 1; coarseGrainingFactor " + std::to_string(s) +
+                                        "; drag { type " + drag + "; } voidFraction { type " + vf +
+                                        "; width 0.002; }",
+                                    "test");
+    return CouplingSettings::read(d);
+}
+
+std::vector<OwnedParticle> lattice(const BoxMesh& mesh, int perAxis, const Vec3& lo, const Vec3& hi,
+                                   double radius, const Vec3& v) {
+    std::vector<OwnedParticle> out;
+    long id = 1;
+    for (int i = 0; i < perAxis; ++i)
+        for (int j = 0; j < perAxis; ++j)
+            for (int k = 0; k < perAxis; ++k) {
+                OwnedParticle p;
+                p.state.id = id++;
+                p.state.x = lo + ((Vec3(i, j, k).array() + 0.5) / perAxis * (hi - lo).array()).matrix();
+                p.state.v = v;
+                p.state.radius = radius;
+                p.cell = mesh.findCell(p.state.x);
+                out.push_back(p);
+            }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("void fraction is one minus the particle volume per cell", "[coupler]") {
+    // one cell, 4^3 particles of radius r: eps = 1 - 64 * 4/3 pi r^3 / V
+    BoxMesh mesh(Vec3(0, 0, 0), Vec3(0.01, 0.01, 0.01), {1, 1, 1});
+    auto cs = settings("ErgunGidaspow", "centre");
+    CouplingStep step(cs, mesh, FluidProperties{1.2, 1.8e-5});
+    const double r = 0.001;
+    auto parts = lattice(mesh, 4, Vec3(0, 0, 0), Vec3(0.01, 0.01, 0.01), r, Vec3::Zero());
+    std::vector<double> U(3, 0.0), eps(1), K(1), Us(3);
+    step.particlesToCells(parts, U.data(), eps.data(), K.data(), Us.data());
+    CHECK(eps[0] == Approx(1 - 64 * 4.0 / 3.0 * M_PI * r * r * r / 1e-6).epsilon(1e-14));
+    CHECK(step.stats().floorHits == 0);
+}
+
+TEST_CASE("momentum given to the air equals the drag on the particles", "[coupler]") {
+    // Random particles and a non-uniform air velocity: with K and Us per cell
+    // the air loses sum_c K_c V_c (U_c - Us_c); the particles gain sum_p drag_p.
+    BoxMesh mesh(Vec3(0, 0, 0), Vec3(0.02, 0.02, 0.04), {4, 4, 8});
+    for (const std::string vf : {"centre", "divided", "gaussian"}) {
+        auto cs = settings("DiFelice", vf);
+        CouplingStep step(cs, mesh, FluidProperties{1.2, 1.8e-5});
+        std::mt19937 rng(42);
+        std::uniform_real_distribution<double> ux(0.0, 0.02), uz(0.0, 0.04), uv(-0.1, 0.1);
+        std::vector<OwnedParticle> parts(500);
+        for (size_t i = 0; i < parts.size(); ++i) {
+            parts[i].state = {static_cast<std::int64_t>(i + 1), Vec3(ux(rng), ux(rng), uz(rng)),
+                              Vec3(uv(rng), uv(rng), uv(rng)), 5e-4};
+            parts[i].cell = mesh.findCell(parts[i].state.x);
+        }
+        const int n = mesh.nCells();
+        std::vector<double> U(3 * n), eps(n), K(n), Us(3 * n), gradP(3 * n, 0.0), f;
+        for (int c = 0; c < n; ++c) {
+            const Vec3 x = mesh.cellCentre(c);
+            U[3 * c] = 0.3 * x.z() / 0.04;
+            U[3 * c + 1] = -0.1;
+            U[3 * c + 2] = 0.5 + x.x() * 10;
+        }
+        step.particlesToCells(parts, U.data(), eps.data(), K.data(), Us.data());
+        step.cellsToParticles(U.data(), gradP.data(), f);
+        Vec3 air = Vec3::Zero(), particles = Vec3::Zero();
+        for (int c = 0; c < n; ++c)
+            for (int a = 0; a < 3; ++a) air[a] += K[c] * mesh.cellVolume(c) * (U[3 * c + a] - Us[3 * c + a]);
+        const auto& drag = step.dragForces();
+        for (size_t p = 0; p < parts.size(); ++p)
+            for (int a = 0; a < 3; ++a) particles[a] += drag[3 * p + a];
+        INFO("void fraction model " << vf);
+        CHECK((air - particles).norm() <= 1e-12 * particles.norm());
+        CHECK(particles.norm() > 0);
+    }
+}
+
+TEST_CASE("uniform bed: drag + pressure-gradient force per volume equals Ergun", "[coupler]") {
+    // Particles at rest filling one cell uniformly, air at interstitial
+    // velocity u = U_s/eps. In model A the air's steady momentum balance gives
+    // grad p = -K u / eps; the total force on the particles per bed volume is
+    // then the Ergun (1952) pressure drop per length.
+    const double L = 0.01, r = 0.001, rho = 1.2, mu = 1.8e-5;
+    BoxMesh mesh(Vec3(0, 0, 0), Vec3(L, L, L), {1, 1, 1});
+    auto cs = settings("ErgunGidaspow", "centre");
+    cs.buoyancyForce = false;
+    CouplingStep step(cs, mesh, FluidProperties{rho, mu});
+    auto parts = lattice(mesh, 4, Vec3(0, 0, 0), Vec3(L, L, L), r, Vec3::Zero());
+    const double eps = 1 - 64 * 4.0 / 3.0 * M_PI * r * r * r / (L * L * L);
+    const double d = 2 * r;
+    for (double Us : {0.01, 0.1, 1.0}) {
+        const double u = Us / eps;
+        std::vector<double> U{0, 0, u}, epsC(1), K(1), UsC(3), f;
+        step.particlesToCells(parts, U.data(), epsC.data(), K.data(), UsC.data());
+        const std::vector<double> gradP{0, 0, -K[0] * u / eps};
+        step.cellsToParticles(U.data(), gradP.data(), f);
+        double fz = 0;
+        for (size_t p = 0; p < parts.size(); ++p) fz += f[3 * p + 2];
+        const double ergun = 150 * mu * Us * (1 - eps) * (1 - eps) / (eps * eps * eps * d * d) +
+                             1.75 * rho * Us * Us * (1 - eps) / (eps * eps * eps * d);
+        CHECK(fz / (L * L * L) == Approx(ergun).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("coarse-grained parcel feels s^3 times the primary drag", "[coupler]") {
+    // One parcel of factor 2 (radius 2 r) against eight primary particles of
+    // radius r in the same cell volume fraction: same total drag.
+    BoxMesh mesh(Vec3(0, 0, 0), Vec3(0.01, 0.01, 0.01), {1, 1, 1});
+    const double r = 4e-4;
+    auto one = settings("ErgunGidaspow", "centre", 2.0);
+    auto prim = settings("ErgunGidaspow", "centre", 1.0);
+    CouplingStep parcelStep(one, mesh, FluidProperties{});
+    CouplingStep primaryStep(prim, mesh, FluidProperties{});
+    std::vector<OwnedParticle> parcel(1), primaries;
+    parcel[0].state = {1, Vec3(0.005, 0.005, 0.005), Vec3::Zero(), 2 * r};
+    parcel[0].cell = 0;
+    primaries = lattice(mesh, 2, Vec3(0, 0, 0), Vec3(0.01, 0.01, 0.01), r, Vec3::Zero());
+    std::vector<double> U{0, 0, 0.2}, e1(1), e2(1), K1(1), K2(1), Us(3), g(3, 0.0), f1, f2;
+    parcelStep.particlesToCells(parcel, U.data(), e1.data(), K1.data(), Us.data());
+    primaryStep.particlesToCells(primaries, U.data(), e2.data(), K2.data(), Us.data());
+    CHECK(e1[0] == Approx(e2[0]).epsilon(1e-14));
+    CHECK(K1[0] == Approx(K2[0]).epsilon(1e-12));
+}
+
+TEST_CASE("void fraction floor is applied and counted", "[coupler]") {
+    // A particle larger than its cell with the centre model: raw eps < 0.
+    BoxMesh mesh(Vec3(0, 0, 0), Vec3(0.004, 0.001, 0.001), {4, 1, 1});
+    auto cs = settings("ErgunGidaspow", "centre");
+    CouplingStep step(cs, mesh, FluidProperties{});
+    std::vector<OwnedParticle> p(1);
+    p[0].state = {7, Vec3(0.0005, 0.0005, 0.0005), Vec3::Zero(), 0.0008};
+    p[0].cell = 0;
+    std::vector<double> U(12, 0.0), eps(4), K(4), Us(12);
+    step.particlesToCells(p, U.data(), eps.data(), K.data(), Us.data());
+    CHECK(eps[0] == cs.voidFractionFloor);
+    CHECK(step.stats().floorHits == 1);
+    CHECK(step.stats().minRawVoidFraction == Approx(1 - 4.0 / 3.0 * M_PI * 0.0008 * 0.0008 * 0.0008 / 1e-9));
+    CHECK(eps[1] == 1.0);
+}
