@@ -52,45 +52,47 @@ std::vector<Point> readPoints(const granair::Dictionary& dict) {
 
 using granair::Dictionary;
 
-TEST_CASE("every registered drag law matches its reference data file", "[drag][data]") {
-    const auto& laws = granair::dragLaws();
-    REQUIRE(laws.names().size() == 5);
-    for (const auto& name : laws.names()) {
-        const fs::path file = dataDir / (name + ".dat");
-        INFO("drag law " << name << ", data file " << file.string());
-        // A law without a data file is untested: fail loudly.
-        REQUIRE(fs::exists(file));
+TEST_CASE("drag laws: reference data files", "[drag][data]") {
+    SECTION("every registered drag law matches its reference data file") {
+        const auto& laws = granair::dragLaws();
+        REQUIRE(laws.names().size() == 5);
+        for (const auto& name : laws.names()) {
+            const fs::path file = dataDir / (name + ".dat");
+            INFO("drag law " << name << ", data file " << file.string());
+            // A law without a data file is untested: fail loudly.
+            REQUIRE(fs::exists(file));
 
-        const Dictionary dict = Dictionary::fromFile(file.string());
-        const Dictionary& drag = dict.subDict("drag");
-        REQUIRE(drag.getString("type") == name);
-        auto law = laws.create(drag);
-        REQUIRE(law->name() == name);
+            const Dictionary dict = Dictionary::fromFile(file.string());
+            const Dictionary& drag = dict.subDict("drag");
+            REQUIRE(drag.getString("type") == name);
+            auto law = laws.create(drag);
+            REQUIRE(law->name() == name);
 
-        granair::FluidProperties fluid;
-        fluid.rho = dict.subDict("fluid").getDouble("rho");
-        fluid.mu = dict.subDict("fluid").getDouble("mu");
-        const double rtol = dict.getDouble("relativeTolerance");
-        REQUIRE(rtol <= 1e-10);  // the brief's tolerance; never loosened per law
+            granair::FluidProperties fluid;
+            fluid.rho = dict.subDict("fluid").getDouble("rho");
+            fluid.mu = dict.subDict("fluid").getDouble("mu");
+            const double rtol = dict.getDouble("relativeTolerance");
+            REQUIRE(rtol <= 1e-10);  // the brief's tolerance; never loosened per law
 
-        const auto points = readPoints(dict);
-        REQUIRE(points.size() >= 3);
-        for (const auto& p : points) {
-            const double beta = law->beta(p[0], p[1], p[2], fluid);
-            INFO("d = " << p[0] << " m, eps = " << p[1] << ", slip = " << p[2] << " m/s: beta = " << beta
-                        << " kg/s, expected " << p[3]);
-            CHECK(std::abs(beta - p[3]) <= rtol * std::abs(p[3]));
+            const auto points = readPoints(dict);
+            REQUIRE(points.size() >= 3);
+            for (const auto& p : points) {
+                const double beta = law->beta(p[0], p[1], p[2], fluid);
+                INFO("d = " << p[0] << " m, eps = " << p[1] << ", slip = " << p[2] << " m/s: beta = " << beta
+                            << " kg/s, expected " << p[3]);
+                CHECK(std::abs(beta - p[3]) <= rtol * std::abs(p[3]));
+            }
         }
     }
-}
 
-TEST_CASE("every drag data file belongs to a registered drag law", "[drag][data]") {
-    int files = 0;
-    for (const auto& e : fs::directory_iterator(dataDir)) {
-        if (e.path().extension() != ".dat") continue;
-        INFO("data file " << e.path().string());
-        CHECK(granair::dragLaws().has(e.path().stem().string()));
-        ++files;
+    SECTION("every drag data file belongs to a registered drag law") {
+        int files = 0;
+        for (const auto& e : fs::directory_iterator(dataDir)) {
+            if (e.path().extension() != ".dat") continue;
+            INFO("data file " << e.path().string());
+            CHECK(granair::dragLaws().has(e.path().stem().string()));
+            ++files;
+        }
+        CHECK(files == static_cast<int>(granair::dragLaws().names().size()));
     }
-    CHECK(files == static_cast<int>(granair::dragLaws().names().size()));
 }
