@@ -22,7 +22,9 @@ struct Column {
 
 class TimeSeriesWriter {
 public:
-    // stem: path without extension; writes stem.csv and stem.h5.
+    // stem: path without extension; writes stem.csv and stem.h5 (replacing
+    // them). Collective over comm: if rank 0 cannot create the files, every
+    // rank throws InputError naming the path.
     TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::vector<Column> columns);
     ~TimeSeriesWriter();
     TimeSeriesWriter(const TimeSeriesWriter&) = delete;

@@ -1,0 +1,222 @@
+// TimeSeriesWriter.cpp: see TimeSeriesWriter.hpp.
+//
+// Rank 0 of the communicator writes both files with the serial HDF5 API
+// (default property lists; the library is the parallel build, but nothing here
+// needs parallel I/O for a handful of scalars). Other ranks keep no file
+// handles and only check the row length, so a wrong call fails on every rank.
+#include "output/TimeSeriesWriter.hpp"
+
+#include <hdf5.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <set>
+
+#include "core/Collective.hpp"
+#include "core/Error.hpp"
+
+namespace granair {
+
+namespace {
+
+// Rows per HDF5 chunk: a long run appends many rows, one at a time.
+constexpr hsize_t chunkRows = 256;
+
+// HDF5 prints its error stack to stderr by default; we turn failures into
+// exceptions with our own message instead, so silence it while we work.
+class QuietHdf5 {
+public:
+    QuietHdf5() {
+        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    }
+    ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+    QuietHdf5(const QuietHdf5&) = delete;
+    QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+private:
+    H5E_auto2_t func_ = nullptr;
+    void* data_ = nullptr;
+};
+
+// Fixed-length, null-terminated string attribute on an HDF5 object.
+bool writeStringAttribute(hid_t object, const char* name, const std::string& value) {
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    bool ok = type >= 0 && space >= 0 && H5Tset_size(type, value.size() + 1) >= 0 &&
+              H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0;
+    if (ok) {
+        const hid_t attr = H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+        ok = attr >= 0 && H5Awrite(attr, type, value.c_str()) >= 0;
+        if (attr >= 0) H5Aclose(attr);
+    }
+    if (space >= 0) H5Sclose(space);
+    if (type >= 0) H5Tclose(type);
+    return ok;
+}
+
+// Shortest of %.15g .. %.17g that reads back to the same double: exact, but
+// 0.1 stays "0.1" (%.17g alone would print 0.10000000000000001).
+std::string formatExact(double v) {
+    char buf[32];
+    for (int digits = 15; digits <= 17; ++digits) {
+        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+        if (std::strtod(buf, nullptr) == v) break;
+    }
+    return buf;
+}
+
+void checkColumns(const std::string& stem, const std::vector<Column>& columns) {
+    if (columns.empty()) fail<InputError>("time series '", stem, "': no columns given");
+    std::set<std::string> seen;
+    for (const auto& c : columns) {
+        // Names become CSV header fields and HDF5 dataset names.
+        if (c.name.empty() || c.name.find_first_of(",/\"\n\r") != std::string::npos || c.name == ".")
+            fail<InputError>("time series '", stem, "': column name '", c.name,
+                             "' must be non-empty without , / \" or line breaks");
+        if (!seen.insert(c.name).second)
+            fail<InputError>("time series '", stem, "': column '", c.name, "' given twice");
+    }
+}
+
+}  // namespace
+
+struct TimeSeriesWriter::Impl {
+    std::string stem;
+    std::vector<Column> columns;
+    bool writer = false;  // rank 0 of the communicator
+    bool closed = false;
+    std::FILE* csv = nullptr;
+    hid_t file = -1;
+    std::vector<hid_t> datasets;
+    hsize_t rows = 0;
+
+    ~Impl() { release(); }
+
+    std::string csvPath() const { return stem + ".csv"; }
+    std::string h5Path() const { return stem + ".h5"; }
+
+    // Open both files; returns "" or what went wrong (the caller raises it on
+    // all ranks). Leaves nothing open on failure.
+    std::string open() {
+        csv = std::fopen(csvPath().c_str(), "w");
+        if (!csv)
+            return "cannot create time-series file '" + csvPath() + "': " + std::strerror(errno) +
+                   " (does the directory exist and is it writable?)";
+        for (size_t i = 0; i < columns.size(); ++i)
+            std::fprintf(csv, "%s%s", i ? "," : "", columns[i].name.c_str());
+        std::fputc('\n', csv);
+        if (std::fflush(csv) != 0) {
+            release();
+            return "cannot write time-series file '" + csvPath() + "'";
+        }
+
+        QuietHdf5 quiet;
+        file = H5Fcreate(h5Path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+        if (file < 0) {
+            release();
+            return "cannot create time-series file '" + h5Path() + "' (does the directory exist and is it writable?)";
+        }
+        std::string order;
+        for (const auto& c : columns) order += (order.empty() ? "" : ",") + c.name;
+        bool ok = writeStringAttribute(file, "columns", order);
+        const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = chunkRows;
+        const hid_t space = H5Screate_simple(1, &zero, &unlimited);
+        const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+        ok = ok && space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, 1, &chunk) >= 0;
+        for (size_t i = 0; ok && i < columns.size(); ++i) {
+            const hid_t ds = H5Dcreate2(file, columns[i].name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl,
+                                        H5P_DEFAULT);
+            if (ds >= 0) datasets.push_back(ds);
+            ok = ds >= 0 && writeStringAttribute(ds, "unit", columns[i].unit);
+        }
+        if (dcpl >= 0) H5Pclose(dcpl);
+        if (space >= 0) H5Sclose(space);
+        if (ok) ok = H5Fflush(file, H5F_SCOPE_LOCAL) >= 0;
+        if (!ok) {
+            release();
+            return "cannot set up the datasets in time-series file '" + h5Path() + "'";
+        }
+        return "";
+    }
+
+    void appendCsv(const std::vector<double>& row) {
+        for (size_t i = 0; i < row.size(); ++i) std::fprintf(csv, "%s%s", i ? "," : "", formatExact(row[i]).c_str());
+        std::fputc('\n', csv);
+        // Flushed every row so a running job can be plotted.
+        if (std::fflush(csv) != 0 || std::ferror(csv))
+            fail<Error>("time series: writing '", csvPath(), "' failed: ", std::strerror(errno));
+    }
+
+    void appendHdf5(const std::vector<double>& row) {
+        QuietHdf5 quiet;
+        const hsize_t newSize = rows + 1, one = 1;
+        for (size_t i = 0; i < row.size(); ++i) {
+            const hid_t ds = datasets[i];
+            bool ok = H5Dset_extent(ds, &newSize) >= 0;
+            const hid_t fileSpace = ok ? H5Dget_space(ds) : -1;
+            const hid_t memSpace = H5Screate_simple(1, &one, nullptr);
+            ok = ok && fileSpace >= 0 && memSpace >= 0 &&
+                 H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, &rows, nullptr, &one, nullptr) >= 0 &&
+                 H5Dwrite(ds, H5T_NATIVE_DOUBLE, memSpace, fileSpace, H5P_DEFAULT, &row[i]) >= 0;
+            if (memSpace >= 0) H5Sclose(memSpace);
+            if (fileSpace >= 0) H5Sclose(fileSpace);
+            if (!ok) fail<Error>("time series: writing column '", columns[i].name, "' of '", h5Path(), "' failed");
+        }
+        if (H5Fflush(file, H5F_SCOPE_LOCAL) < 0) fail<Error>("time series: flushing '", h5Path(), "' failed");
+        ++rows;
+    }
+
+    // Close whatever is open; returns false if a close failed.
+    bool release() {
+        bool ok = true;
+        for (hid_t ds : datasets) ok = H5Dclose(ds) >= 0 && ok;
+        datasets.clear();
+        if (file >= 0) ok = H5Fclose(file) >= 0 && ok;
+        file = -1;
+        if (csv) ok = std::fclose(csv) == 0 && ok;
+        csv = nullptr;
+        return ok;
+    }
+};
+
+TimeSeriesWriter::TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::vector<Column> columns)
+    : impl_(std::make_unique<Impl>()) {
+    checkColumns(stem, columns);
+    impl_->stem = stem;
+    impl_->columns = std::move(columns);
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    impl_->writer = rank == 0;
+    raiseIfAny(comm, impl_->writer ? impl_->open() : std::string());
+}
+
+TimeSeriesWriter::~TimeSeriesWriter() {
+    try {
+        close();
+    } catch (...) {
+        // A destructor must not throw; close() explicitly to see the error.
+    }
+}
+
+void TimeSeriesWriter::append(const std::vector<double>& row) {
+    Impl& m = *impl_;
+    if (m.closed) fail<Error>("time series '", m.stem, "': append() after close()");
+    if (row.size() != m.columns.size())
+        fail<Error>("time series '", m.stem, "': row has ", row.size(), " values, expected ", m.columns.size(),
+                    " (one per column)");
+    if (!m.writer) return;
+    m.appendCsv(row);
+    m.appendHdf5(row);
+}
+
+void TimeSeriesWriter::close() {
+    Impl& m = *impl_;
+    if (m.closed) return;
+    m.closed = true;
+    if (!m.release()) fail<Error>("time series '", m.stem, "': closing the files failed");
+}
+
+}  // namespace granair

@@ -1,0 +1,1 @@
+list(APPEND GRANAIR_COUPLING_SOURCES output/TimeSeriesWriter.cpp)

@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+"""make_reference.py: reference values for the drag-law unit tests.
+
+Writes one <Name>.dat per drag law beside this script, in the OpenFOAM-like
+syntax of granair's Dictionary. The values are computed here from the
+published formulas in their textbook form (volumetric coefficients divided by
+the particle number density, Cd from Re, forces divided by the slip), NOT from
+the rearranged per-particle forms used in coupling/drag/, so the C++ algebra
+is checked independently. python3 + standard library only.
+
+Usage:  python3 tests/data/drag/make_reference.py
+"""
+import math
+import os
+
+RTOL = 1e-10
+AIR = {"rho": 1.2, "mu": 1.8e-5}  # kg/m3, Pa s (air at ~20 C)
+
+
+def particle_volume(d):
+    return math.pi * d**3 / 6.0
+
+
+def cd_schiller_naumann(re):
+    """Schiller & Naumann (1935); 0.44 plateau for Re >= 1000."""
+    return 24.0 / re * (1.0 + 0.15 * re**0.687) if re < 1000.0 else 0.44
+
+
+# --- the laws, in their published form --------------------------------------
+def wen_yu(d, eps, u, rho, mu):
+    """Gidaspow (1994) form of Wen & Yu (1966): beta_vol, then per particle."""
+    re = eps * rho * abs(u) * d / mu
+    cd = cd_schiller_naumann(re)
+    if eps < 1.0:
+        beta_vol = 0.75 * cd * eps * (1.0 - eps) * rho * abs(u) / d * eps**-2.65
+        n = (1.0 - eps) / particle_volume(d)  # particles per m3
+        return beta_vol / n, re
+    # eps = 1: no particles per volume; use the force on one sphere instead,
+    # F = 1/2 Cd rho A |u| u eps^-1.65 with A = pi d^2/4.
+    force = 0.5 * cd * rho * math.pi * d**2 / 4.0 * u * u * eps**-1.65
+    return force / u, re
+
+
+def ergun(d, eps, u, rho, mu):
+    """Ergun (1952) in Gidaspow's model-A form: beta_vol, then per particle."""
+    beta_vol = 150.0 * (1.0 - eps)**2 * mu / (eps * d**2) + 1.75 * (1.0 - eps) * rho * abs(u) / d
+    n = (1.0 - eps) / particle_volume(d)
+    return beta_vol / n
+
+
+def ergun_gidaspow(d, eps, u, rho, mu, switch):
+    if eps < switch:
+        return ergun(d, eps, u, rho, mu), eps * rho * u * d / mu, "Ergun"
+    beta, re = wen_yu(d, eps, u, rho, mu)
+    return beta, re, "Wen-Yu, Cd " + ("24/Re(1+0.15Re^0.687)" if re < 1000 else "0.44")
+
+
+def di_felice(d, eps, u, rho, mu):
+    """Di Felice (1994): F = 1/2 Cd rho (pi d^2/4) eps^2 u^2 eps^-chi."""
+    re = rho * d * eps * u / mu
+    cd = (0.63 + 4.8 / math.sqrt(re))**2
+    chi = 3.7 - 0.65 * math.exp(-((1.5 - math.log10(re))**2) / 2.0)
+    force = 0.5 * cd * rho * math.pi * d**2 / 4.0 * eps**2 * u * u * eps**-chi
+    return force / u, re, "chi = %.6f" % chi
+
+
+def schiller_naumann(d, eps, u, rho, mu):
+    re = rho * d * u / mu
+    cd = cd_schiller_naumann(re)
+    force = 0.5 * cd * rho * math.pi * d**2 / 4.0 * u * u
+    return force / u, re, "Cd " + ("24/Re(1+0.15Re^0.687)" if re < 1000 else "0.44")
+
+
+def bvk(d, eps, u, rho, mu):
+    """Beetstra, van der Hoef & Kuipers (2007), eq. 16, as printed:
+    F = F_d / (3 pi mu d U), U = eps u superficial, Re = rho d U / mu."""
+    phi = 1.0 - eps
+    big_u = eps * u
+    re = rho * d * big_u / mu
+    f = (10.0 * phi / (1.0 - phi)**2 + (1.0 - phi)**2 * (1.0 + 1.5 * math.sqrt(phi))
+         + 0.413 * re / (24.0 * (1.0 - phi)**2)
+         * (1.0 / (1.0 - phi) + 3.0 * phi * (1.0 - phi) + 8.4 * re**-0.343)
+         / (1.0 + 10.0**(3.0 * phi) * re**(-(1.0 + 4.0 * phi) / 2.0)))
+    drag = 3.0 * math.pi * mu * d * big_u * f
+    return drag / u, re, "F = %.6f" % f
+
+
+# --- the test points: (d [m], eps [-], slip [m/s]) --------------------------
+POINTS = {
+    "ErgunGidaspow": [
+        (1e-4, 0.4, 0.02), (2.25e-4, 0.45, 0.5), (2e-3, 0.55, 3.0), (5e-3, 0.79, 10.0),  # Ergun
+        (1e-4, 0.8, 0.05),  # exactly at the switch: Wen-Yu
+        (2.25e-4, 0.9, 1.0), (2e-3, 0.95, 2.0), (5e-3, 0.99, 8.0),  # Wen-Yu, both Cd branches
+    ],
+    "WenYu": [
+        (1e-4, 0.4, 0.02), (2.25e-4, 0.6, 0.5), (2e-3, 0.8, 3.0), (5e-3, 0.95, 10.0), (1e-3, 1.0, 1.0),
+        (5e-3, 1.0, 4.0),
+    ],
+    "DiFelice": [
+        (1e-4, 0.4, 0.02), (2.25e-4, 0.6, 0.5), (2e-3, 0.8, 3.0), (5e-3, 0.95, 10.0), (1e-3, 1.0, 1.0),
+    ],
+    "SchillerNaumann": [
+        (1e-4, 1.0, 0.02), (2.25e-4, 0.5, 0.5), (2e-3, 1.0, 3.0), (5e-3, 1.0, 10.0), (1e-3, 0.7, 1.0),
+    ],
+    "BeetstraVanDerHoefKuipers": [
+        (1e-4, 0.4, 0.02), (2.25e-4, 0.5, 0.5), (2e-3, 0.6, 3.0), (5e-3, 0.7, 4.0), (1e-3, 0.9, 1.0),
+        (1e-3, 1.0, 1.0),
+    ],
+}
+
+SWITCH = 0.8
+
+
+def evaluate(name, d, eps, u, rho, mu):
+    if name == "ErgunGidaspow":
+        return ergun_gidaspow(d, eps, u, rho, mu, SWITCH)
+    if name == "WenYu":
+        beta, re = wen_yu(d, eps, u, rho, mu)
+        return beta, re, "Cd " + ("24/Re(1+0.15Re^0.687)" if re < 1000 else "0.44")
+    return {"DiFelice": di_felice, "SchillerNaumann": schiller_naumann,
+            "BeetstraVanDerHoefKuipers": bvk}[name](d, eps, u, rho, mu)
+
+
+def write(name, directory):
+    lines = [
+        "// %s.dat: reference drag coefficients for the drag law %s." % (name, name),
+        "// GENERATED by make_reference.py from the published formulas; do not edit.",
+        "// Each point: (d [m]  eps [-]  slip [m/s]  beta [kg/s]), beta per primary particle.",
+        "",
+        "drag",
+        "{",
+        "    type %s;" % name,
+    ]
+    if name == "ErgunGidaspow":
+        lines.append("    switchVoidFraction %r;" % SWITCH)
+    lines += [
+        "}",
+        "",
+        "fluid",
+        "{",
+        "    rho %r;   // kg/m3" % AIR["rho"],
+        "    mu  %r;   // Pa s" % AIR["mu"],
+        "}",
+        "",
+        "relativeTolerance %r;" % RTOL,
+        "",
+        "points",
+        "(",
+    ]
+    for d, eps, u in POINTS[name]:
+        beta, re, note = evaluate(name, d, eps, u, AIR["rho"], AIR["mu"])
+        lines.append("    (%r %r %r %r)   // Re = %.4g, %s" % (d, eps, u, beta, re, note))
+    lines += [");", ""]
+    with open(os.path.join(directory, name + ".dat"), "w") as out:
+        out.write("\n".join(lines))
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    for name in POINTS:
+        write(name, here)
+        print("wrote", name + ".dat")
+
+
+if __name__ == "__main__":
+    main()
