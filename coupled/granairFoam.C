@@ -31,14 +31,7 @@ int main(int argc, char* argv[])
 
     #include "setRootCase.H"
 
-    // Serial OpenFOAM does not initialise MPI; LIGGGHTS and the coupling
-    // layer need it.
-    int mpiInitialised = 0;
-    MPI_Initialized(&mpiInitialised);
-    if (!mpiInitialised)
-    {
-        MPI_Init(&argc, &argv);
-    }
+    Foam::granair::MpiSession mpi(argc, argv);
 
     #include "createTime.H"
     #include "createMesh.H"
@@ -72,10 +65,6 @@ int main(int argc, char* argv[])
         // Not through OpenFOAM's exit: its parallel shutdown exits with 0.
         MPI_Finalize();
         std::exit(rc);
-    }
-    if (!Pstream::parRun())
-    {
-        MPI_Finalize();    // we initialised MPI; parallel OpenFOAM finalises it itself
     }
     return 0;
 }

@@ -9,6 +9,12 @@ export WM_PROJECT_DIR="${GRANAIR_OPENFOAM_SRC:-$GRANAIR_ROOT/.cache/openfoam-Ope
 export WM_PROJECT=OpenFOAM WM_PROJECT_VERSION=v1912
 export FOAM_SIGFPE=true          # stop on floating-point exceptions (NaN) rather than run on
 export PATH="$GRANAIR_BUILD/bin:$PATH"
+# Plotting uses Debian's python3-matplotlib/numpy, which belong to /usr/bin/python3
+# (another python3 earlier on PATH, e.g. pyenv's, would not see them).
+if [ -z "${GRANAIR_PYTHON:-}" ]; then
+  if [ -x /usr/bin/python3 ]; then GRANAIR_PYTHON=/usr/bin/python3; else GRANAIR_PYTHON=python3; fi
+fi
+export GRANAIR_PYTHON
 # Open MPI: allow root (CI, containers) and more ranks than cores.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1

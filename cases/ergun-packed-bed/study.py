@@ -49,7 +49,9 @@ def fill_template(src, dst, values):
 
 def run(cmd, cwd, log):
     with open(os.path.join(cwd, log), "w") as fh:
-        r = subprocess.run(cmd, cwd=cwd, stdout=fh, stderr=subprocess.STDOUT)
+        # PWD must match cwd, or OpenFOAM warns that it does not
+        env = dict(os.environ, PWD=cwd)
+        r = subprocess.run(cmd, cwd=cwd, stdout=fh, stderr=subprocess.STDOUT, env=env)
     if r.returncode != 0:
         with open(os.path.join(cwd, log)) as fh:
             tail = fh.readlines()[-20:]

@@ -118,14 +118,13 @@ void AirSolver::solveStep()
     volScalarField& p = p_;
     surfaceScalarField& phi = phi_;
     const dimensionedScalar& rho = rho_;
-    const volScalarField nu("nu", eps*0 + mu_/rho_);
     const volScalarField KbyRho("KbyRho", Ksl_/rho);
 
     while (pimple_.loop())
     {
         const surfaceScalarField epsf("epsf", fvc::interpolate(eps));
         const surfaceScalarField epsPhi("epsPhi", epsf*phi);
-        const volScalarField epsNu("epsNu", eps*nu);
+        const volScalarField epsNu("epsNu", eps*(mu_/rho_));
 
         // Non-conservative form: eps (dU/dt + U.grad U), consistent with
         // continuity, as in cfdemSolverPiso and DPMFoam.

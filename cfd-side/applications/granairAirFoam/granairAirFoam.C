@@ -31,6 +31,7 @@ int main(int argc, char* argv[])
     Foam::granair::ensureFoamRuntime();
     argList::addNote("granair air solver through a prescribed static particle bed");
     #include "setRootCase.H"
+    Foam::granair::MpiSession mpi(argc, argv);
     #include "createTime.H"
     #include "createMesh.H"
 
