@@ -20,7 +20,7 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
 :
     runTime_(runTime),
     mesh_(mesh),
-    dict_(::granair::Dictionary::fromFile(runTime.path()/"constant"/"couplingProperties")),
+    dict_(::granair::Dictionary::fromFile(runTime.globalPath()/"constant"/"couplingProperties")),
     settings_(::granair::CouplingSettings::read(dict_))
 {
     const fileName caseDir = runTime.globalPath();

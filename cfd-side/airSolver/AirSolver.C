@@ -102,9 +102,12 @@ void AirSolver::checkVoidFraction() const
         {
             FatalErrorInFunction
                 << "void fraction " << e << " in cell " << celli
-                << " at " << mesh_.C()[celli]
-                << (Pstream::parRun() ? " (processor " + Foam::name(Pstream::myProcNo()) + ")" : word(""))
-                << ": expected 0 < voidfraction <= 1" << exit(FatalError);
+                << " at " << mesh_.C()[celli];
+            if (Pstream::parRun())
+            {
+                FatalError<< " (processor " << Pstream::myProcNo() << ")";
+            }
+            FatalError<< ": expected 0 < voidfraction <= 1" << exit(FatalError);
         }
     }
 }

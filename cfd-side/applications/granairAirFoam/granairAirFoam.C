@@ -39,7 +39,7 @@ int main(int argc, char* argv[])
     {
         const auto dict = ::granair::Dictionary::fromFile
         (
-            runTime.path()/"constant"/"couplingProperties"
+            runTime.globalPath()/"constant"/"couplingProperties"
         );
         auto law = ::granair::dragLaws().create(dict.subDict("drag"));
         const double d = dict.subDict("bed").getDouble("diameter", 1e-7, 1.0);
