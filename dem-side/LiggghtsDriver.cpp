@@ -1,0 +1,241 @@
+// LiggghtsDriver.cpp: see LiggghtsDriver.hpp.
+#include "LiggghtsDriver.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <system_error>
+#include <unordered_map>
+
+#include "FluidForceStore.hpp"
+#include "ScreenErrorEcho.hpp"
+#include "atom.h"
+#include "core/Collective.hpp"
+#include "core/Error.hpp"
+#include "lammps.h"
+#include "library.h"
+#include "universe.h"
+#include "update.h"
+
+namespace granair::dem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Can this process create/overwrite `path` the way LIGGGHTS' fopen(path,"w")
+// will? ("a" does not truncate an existing file.)
+// granair reads per-particle radius and mass: the granular (sphere) style.
+void requireSpheres(const LAMMPS_NS::Atom& atom) {
+    if (!atom.radius || !atom.rmass)
+        fail<InputError>("LIGGGHTS atom style has no per-particle radius and mass: the DEM "
+                         "script must use `atom_style granular` (or sphere)");
+}
+
+bool writable(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "a");
+    if (!f) return false;
+    std::fclose(f);
+    return true;
+}
+
+}  // namespace
+
+void LiggghtsDriver::checkLogDir() const {
+    // Only rank 0 opens LIGGGHTS' files; the others wait for its verdict.
+    std::string problem;
+    if (rank_ == 0) {
+        std::error_code ec;
+        fs::create_directories(logDir_, ec);
+        if (!fs::is_directory(logDir_))
+            problem = "LIGGGHTS log directory '" + logDir_ + "' cannot be created" +
+                      (ec ? " (" + ec.message() + ")" : std::string(" (not a directory)"));
+        else
+            for (const char* name : {"/log.liggghts", "/screen.liggghts"})
+                if (problem.empty() && !writable(logDir_ + name))
+                    problem = "LIGGGHTS output file '" + logDir_ + name +
+                              "' cannot be written (check the permissions of '" + logDir_ + "')";
+    }
+    raiseIfAny(comm_, problem);
+}
+
+LiggghtsDriver::LiggghtsDriver(MPI_Comm comm, const std::string& logDir) : logDir_(logDir) {
+    int initialised = 0;
+    MPI_Initialized(&initialised);
+    if (!initialised)
+        fail<Error>("LiggghtsDriver: MPI must be initialised before opening LIGGGHTS");
+    MPI_Comm_dup(comm, &comm_);
+    MPI_Comm_rank(comm_, &rank_);
+    if (logDir_.empty()) logDir_ = ".";
+    try {
+        checkLogDir();
+    } catch (...) {
+        MPI_Comm_free(&comm_);
+        throw;
+    }
+
+    std::string log = logDir_ + "/log.liggghts";
+    std::string screen = logDir_ + "/screen.liggghts";
+    // Not `-screen none`: that crashes LIGGGHTS 3.8.0 in Region::reset_random.
+    const char* args[] = {"liggghts", "-log", log.c_str(), "-screen", screen.c_str()};
+    constexpr int nArgs = sizeof(args) / sizeof(args[0]);
+    void* handle = nullptr;
+    lammps_open(nArgs, const_cast<char**>(args), comm, &handle);
+    lmp_ = static_cast<LAMMPS_NS::LAMMPS*>(handle);
+
+    // Route LIGGGHTS' screen through the ERROR-echoing stream on every rank
+    // (on rank 0 it wraps the screen file; elsewhere the screen is NULL and
+    // Error::one's message would otherwise be lost). universe->uscreen is
+    // the same stream in a single-partition run.
+    screen_ = openScreenErrorEcho(lmp_->screen, &lmp_->logfile, log, screen);
+    if (screen_) {
+        lmp_->screen = screen_;
+        lmp_->universe->uscreen = screen_;
+    }
+}
+
+LiggghtsDriver::~LiggghtsDriver() {
+    // forces_ outlives LIGGGHTS: fix external holds a pointer to it.
+    // LAMMPS' destructor closes the log but, in a single-partition run, not
+    // the screen: close our stream (and the file under it) ourselves.
+    lammps_close(lmp_);
+    if (screen_) std::fclose(screen_);
+    MPI_Comm_free(&comm_);
+}
+
+void LiggghtsDriver::runFile(const std::string& path) {
+    // LIGGGHTS opens the script on rank 0 only and MPI_Aborts if it cannot.
+    std::string problem;
+    if (rank_ == 0) {
+        std::FILE* f = std::fopen(path.c_str(), "r");
+        if (f)
+            std::fclose(f);
+        else
+            problem = "LIGGGHTS input script '" + path + "' cannot be read (missing file?)";
+    }
+    raiseIfAny(comm_, problem);
+    needsSetup_ = true;
+    lammps_file(lmp_, path.c_str());
+}
+
+void LiggghtsDriver::command(const std::string& line) {
+    needsSetup_ = true;
+    lammps_command(lmp_, line.c_str());
+}
+
+double LiggghtsDriver::timestep() const { return lmp_->update->dt; }
+
+std::int64_t LiggghtsDriver::step() const { return lmp_->update->ntimestep; }
+
+double LiggghtsDriver::time() const { return lmp_->update->get_cur_time(); }
+
+std::int64_t LiggghtsDriver::nGlobal() const {
+    // Not atom->natoms: LIGGGHTS only refreshes it at thermo output when atoms
+    // are lost with `thermo_modify lost ignore`.
+    long long local = lmp_->atom->nlocal, global = 0;
+    MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm_);
+    return global;
+}
+
+int LiggghtsDriver::nLocal() const { return lmp_->atom->nlocal; }
+
+void LiggghtsDriver::enableFluidForces() {
+    if (forces_) return;
+    forces_ = std::make_unique<FluidForceStore>(lmp_);
+    needsSetup_ = true;
+}
+
+void LiggghtsDriver::setFluidForces(const std::vector<Vec3>& forces) {
+    if (!forces_) fail<Error>("LiggghtsDriver::setFluidForces called before enableFluidForces()");
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    const int nlocal = atom.nlocal;
+    std::ostringstream problem;
+    problem.precision(10);
+    if (forces.size() != lastTags_.size())
+        problem << "setFluidForces: " << forces.size() << " forces given for "
+                << lastTags_.size() << " particles of the last getParticles() call on this rank";
+    for (std::size_t k = 0; problem.tellp() == 0 && k < forces.size(); ++k)
+        if (!forces[k].allFinite())
+            problem << "setFluidForces: fluid force on particle " << lastTags_[k] << " is ("
+                    << forces[k].transpose() << ") N, expected finite values";
+
+    // Still in the remembered order? (Nothing ran since getParticles, unless a
+    // command deleted or created atoms.) Otherwise match by tag.
+    bool sameOrder = problem.tellp() == 0 && nlocal == static_cast<int>(lastTags_.size());
+    for (int i = 0; sameOrder && i < nlocal; ++i) sameOrder = atom.tag[i] == lastTags_[i];
+    std::vector<int> index(lastTags_.size());
+    if (problem.tellp() == 0) {
+        if (sameOrder) {
+            for (int i = 0; i < nlocal; ++i) index[i] = i;
+        } else {
+            std::unordered_map<int, int> local;
+            local.reserve(nlocal);
+            for (int i = 0; i < nlocal; ++i) local.emplace(atom.tag[i], i);
+            for (std::size_t k = 0; problem.tellp() == 0 && k < lastTags_.size(); ++k) {
+                auto it = local.find(lastTags_[k]);
+                if (it == local.end())
+                    problem << "setFluidForces: particle " << lastTags_[k]
+                            << " of the last getParticles() call is no longer on this rank "
+                               "(deleted, or LIGGGHTS ran in between); call getParticles() again";
+                else
+                    index[k] = it->second;
+            }
+        }
+    }
+    raiseIfAny(comm_, problem.str());
+
+    // `run N pre no` does not recompute forces before its first half-kick:
+    // it uses atom->f as the last step left it, which holds the *old* fluid
+    // force. Patch f by the change so the new force acts from the first
+    // half-step, exactly as a full setup would give (the other forces are
+    // unchanged since nothing moved). A full setup recomputes f anyway, and
+    // before the first run f holds nothing yet.
+    double** f = atom.f;
+    for (std::size_t k = 0; k < forces.size(); ++k) {
+        const int i = index[k];
+        double* stored = forces_->force(i);
+        for (int d = 0; d < 3; ++d) {
+            if (!needsSetup_) f[i][d] += forces[k][d] - stored[d];
+            stored[d] = forces[k][d];
+        }
+    }
+}
+
+void LiggghtsDriver::advance(int nSteps) {
+    if (nSteps < 0)
+        fail<InputError>("LiggghtsDriver::advance: nSteps = ", nSteps, ", expected >= 0");
+    if (forces_) forces_->bind();
+    std::string cmd = "run " + std::to_string(nSteps);
+    // A full setup re-initialises every style and rebuilds neighbour lists:
+    // needed the first time and after any command (deleted or created atoms
+    // invalidate the lists); `pre no` skips it for plain continuation, `post
+    // no` skips the timing summary.
+    if (!needsSetup_) cmd += " pre no post no";
+    lammps_command(lmp_, cmd.c_str());
+    needsSetup_ = false;
+}
+
+void LiggghtsDriver::getParticles(std::vector<ParticleState>& out) {
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    requireSpheres(atom);
+    const int nlocal = atom.nlocal;
+    out.resize(nlocal);
+    lastTags_.resize(nlocal);
+    for (int i = 0; i < nlocal; ++i) {
+        ParticleState& p = out[i];
+        p.id = atom.tag[i];
+        p.x = Vec3(atom.x[i][0], atom.x[i][1], atom.x[i][2]);
+        p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
+        p.radius = atom.radius[i];
+        lastTags_[i] = atom.tag[i];
+    }
+}
+
+void LiggghtsDriver::getParticleMasses(std::vector<double>& out) const {
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    requireSpheres(atom);
+    out.assign(atom.rmass, atom.rmass + atom.nlocal);
+}
+
+}  // namespace granair::dem

@@ -1,0 +1,104 @@
+// LiggghtsDriver.hpp: one LIGGGHTS 3.8 instance driven as a library.
+//
+// The DEM input stays an ordinary LIGGGHTS script (box, walls, pair style,
+// insertion, integrator, gravity, timestep) without the `run` of the coupled
+// part; the driver runs the steps, reads the particles and applies the fluid
+// forces. Calls marked "collective" must be made by every rank of the
+// communicator in the same order (they run LIGGGHTS commands or reductions).
+//
+// Errors: granair's own checks throw granair::InputError / granair::Error
+// on all ranks together. An error *inside* LIGGGHTS cannot be caught (3.8
+// has no exceptions: it ends the job itself, see README.md); the driver
+// makes sure its ERROR line appears on stderr as "LIGGGHTS error: ...".
+#pragma once
+#include <mpi.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Particle.hpp"
+#include "core/Vec3.hpp"
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace granair::dem {
+
+class FluidForceStore;
+
+class LiggghtsDriver {
+public:
+    // Opens LIGGGHTS on comm with its log in <logDir>/log.liggghts and its
+    // screen in <logDir>/screen.liggghts (logDir is created if missing).
+    // InputError naming the path if the directory or files cannot be
+    // written. Requires MPI to be initialised. Collective.
+    LiggghtsDriver(MPI_Comm comm, const std::string& logDir);
+    // Closes LIGGGHTS (lammps_close); never finalises MPI. Collective.
+    ~LiggghtsDriver();
+    LiggghtsDriver(const LiggghtsDriver&) = delete;
+    LiggghtsDriver& operator=(const LiggghtsDriver&) = delete;
+
+    // Runs a LIGGGHTS input script. InputError naming the file if rank 0
+    // cannot read it (checked before LIGGGHTS sees it: LIGGGHTS would
+    // MPI_Abort). Collective.
+    void runFile(const std::string& path);
+    // Runs one LIGGGHTS command. Collective.
+    void command(const std::string& line);
+
+    double timestep() const;  // [s]
+    std::int64_t step() const;
+    double time() const;  // simulated time [s]
+    std::int64_t nGlobal() const;  // particles on all ranks. Collective.
+    int nLocal() const;  // particles owned by this rank
+
+    // Creates the fluid-force fixes (see FluidForceStore.hpp); every
+    // particle starts with zero fluid force. Collective.
+    void enableFluidForces();
+    // Fluid force [N] of each local particle, in the order of the last
+    // getParticles() call on this rank; kept until set again (constant over
+    // the DEM steps of a coupling interval). Particles created since then
+    // keep their force (zero when new). If LIGGGHTS reordered its atoms since
+    // (a command deleted or created some), forces are matched by tag. The new
+    // force acts from the first half-step of the next advance() (see .cpp;
+    // assumes no fix overrides f after fix external, e.g. freeze/setforce).
+    // InputError if the size is wrong, a force is not finite, or a particle
+    // of that list is no longer on this rank. Collective (the check).
+    void setFluidForces(const std::vector<Vec3>& forces);
+
+    // Advances the DEM by nSteps steps: a full LIGGGHTS setup (`run N`) the
+    // first time and after any command(), `run N pre no post no` otherwise.
+    // Collective.
+    void advance(int nSteps);
+
+    // Local particles (id = LIGGGHTS tag, x, v, radius) in LIGGGHTS' local
+    // order; remembered for setFluidForces.
+    void getParticles(std::vector<ParticleState>& out);
+    // Mass [kg] of each local particle, same order as getParticles (valid
+    // until the next command or advance).
+    void getParticleMasses(std::vector<double>& out) const;
+
+    MPI_Comm comm() const { return comm_; }
+    int rank() const { return rank_; }
+    const std::string& logDir() const { return logDir_; }
+    std::string logPath() const { return logDir_ + "/log.liggghts"; }
+    // For dem-side classes that need LIGGGHTS internals (DischargeCounter).
+    LAMMPS_NS::LAMMPS* lammps() { return lmp_; }
+
+private:
+    void checkLogDir() const;
+
+    MPI_Comm comm_ = MPI_COMM_NULL;  // our duplicate of the caller's comm
+    int rank_ = 0;
+    std::string logDir_;
+    LAMMPS_NS::LAMMPS* lmp_ = nullptr;
+    std::FILE* screen_ = nullptr;  // the echoing screen stream we installed
+    std::unique_ptr<FluidForceStore> forces_;
+    bool needsSetup_ = true;  // a command ran since the last full setup
+    std::vector<int> lastTags_;  // tags in the order of the last getParticles
+};
+
+}  // namespace granair::dem
