@@ -1,6 +1,7 @@
 // catch_mpi_main.cpp: Catch2 main for every test executable. Initialises MPI
-// (tests of the coupling layer call MPI even on one rank) and lets only rank
-// 0 print Catch2's report while a failure on any rank fails the run.
+// (tests of the coupling layer call MPI even on one rank). Every rank prints
+// its own Catch2 report (so a failure on rank 1 is visible), and a failure on
+// any rank fails the run on all ranks.
 #define CATCH_CONFIG_RUNNER
 #include <mpi.h>
 
