@@ -114,7 +114,8 @@ void run(long nGlobal, int demAxis, int steps, int rank, int size) {
     if (rank == 0)
         std::printf("%8ld  %5d  %-9s  %8.3f  %8.3f  %8.3f  %8.3f  %8.3f  %8.1f  %8d\n", nGlobal, size,
                     demAxis == 0 ? "x vs z" : "z vs z", median(tFind), median(tForward), median(tBackward),
-                    median(tTotal), *std::min_element(tTotal.begin(), tTotal.end()), median(bytes), maxPartners);
+                    median(tTotal), *std::min_element(tTotal.begin(), tTotal.end()), median(bytes),
+                    maxPartners);
 }
 
 }  // namespace
@@ -130,9 +131,10 @@ int main(int argc, char** argv) {
     if (sizes.empty()) sizes = {10000, 100000};
     if (rank == 0) {
         std::printf("# mesh 40^3 cells, CFD slabs along z; DEM slabs along x (differ) or z (match)\n");
-        std::printf("# median of %d steps, slowest rank; times in us of wall time per particle per step\n", steps);
-        std::printf("# %6s  %5s  %-9s  %8s  %8s  %8s  %8s  %8s  %8s  %8s\n", "N", "ranks", "DEM/CFD", "findCell",
-                    "forward", "backward", "total", "min tot", "bytes/p", "partners");
+        std::printf("# median of %d steps, slowest rank; times in us of wall time per particle per step\n",
+                    steps);
+        std::printf("# %6s  %5s  %-9s  %8s  %8s  %8s  %8s  %8s  %8s  %8s\n", "N", "ranks", "DEM/CFD",
+                    "findCell", "forward", "backward", "total", "min tot", "bytes/p", "partners");
     }
     for (long n : sizes)
         for (int demAxis : {0, 2}) run(n, demAxis, steps, rank, size);

@@ -21,9 +21,9 @@ namespace {
 // other messages have a known pattern, at most one per (pair, tag, call), and
 // MPI's non-overtaking rule keeps consecutive calls apart.
 constexpr int kTagRecords[2] = {4101, 4102};
-constexpr int kTagFound = 4103;     // candidate -> DEM owner: found flag per multi record
-constexpr int kTagKeep = 4104;      // DEM owner -> finder: keep flag per multi record
-constexpr int kTagValues = 4105;    // backward(): values, CFD owner -> DEM owner
+constexpr int kTagFound = 4103;   // candidate -> DEM owner: found flag per multi record
+constexpr int kTagKeep = 4104;    // DEM owner -> finder: keep flag per multi record
+constexpr int kTagValues = 4105;  // backward(): values, CFD owner -> DEM owner
 
 std::string show(const Vec3& x) {
     std::ostringstream os;
@@ -51,18 +51,18 @@ struct ParticleExchange::Impl {
     MPI_Comm comm = MPI_COMM_NULL;  // private duplicate of the user's comm
     RankBoxIndex boxes;             // inflated CFD boxes of all ranks
     std::uint64_t forwardCalls = 0;
-    bool routesValid = false;       // last forward() succeeded
-    std::vector<int> candidates;    // scratch: candidate ranks of one particle
+    bool routesValid = false;     // last forward() succeeded
+    std::vector<int> candidates;  // scratch: candidate ranks of one particle
 
     // ---- DEM side: this rank's particles going out ----
     // Records for one remote candidate rank.
     struct Outbox {
         int rank = -1;
-        std::vector<char> message;         // records + trailer (RecordMessage.hpp)
-        std::vector<std::int64_t> multi;   // positions of multi records in message
-        std::vector<int> dem;              // dem index of each record
-        std::vector<char> found;           // reply: found flag per multi record
-        std::vector<char> keep;            // decision: keep flag per multi record
+        std::vector<char> message;        // records + trailer (RecordMessage.hpp)
+        std::vector<std::int64_t> multi;  // positions of multi records in message
+        std::vector<int> dem;             // dem index of each record
+        std::vector<char> found;          // reply: found flag per multi record
+        std::vector<char> keep;           // decision: keep flag per multi record
         bool anyFound() const {
             for (char f : found)
                 if (f) return true;
@@ -100,7 +100,7 @@ struct ParticleExchange::Impl {
     };
     std::vector<Inbound> inbound;  // first nInbound in use, ascending rank
     int nInbound = 0;
-    std::vector<int> cells;        // findCell of every inbound record
+    std::vector<int> cells;  // findCell of every inbound record
 
     // ---- routes of the last forward(), for backward() ----
     struct Route {
@@ -189,7 +189,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
     for (int i = 0; i < static_cast<int>(dem.size()); ++i) {
         const ParticleState& p = dem[i];
         if (!p.x.allFinite()) {
-            error.note("particle ", p.id, " has a non-finite position ", show(p.x), "; expected finite coordinates [m]");
+            error.note("particle ", p.id, " has a non-finite position ", show(p.x),
+                       "; expected finite coordinates [m]");
             continue;
         }
         if (!p.v.allFinite()) {
@@ -210,7 +211,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         }
         const bool multi = m.candidates.size() > 1;
         if (multi)
-            m.multis.push_back({i, static_cast<int>(m.multiCandidates.size()), static_cast<int>(m.candidates.size())});
+            m.multis.push_back(
+                {i, static_cast<int>(m.multiCandidates.size()), static_cast<int>(m.candidates.size())});
         for (int r : m.candidates) {
             ++stats_.particlesSent;
             if (r == rank_) {
@@ -248,8 +250,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         const ParticleState& p = dem[m.selfDem[j]];
         m.selfCell[j] = mesh_.findCell(p.x);
         if (m.selfCell[j] < 0 && !m.selfMulti[j])
-            error.note("particle ", p.id, " at ", show(p.x),
-                       " is outside the CFD mesh (in rank ", rank_, "'s CFD box but in none of its cells)");
+            error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
+                       "'s CFD box but in none of its cells)");
     }
     m.nInbound = static_cast<int>(m.inbox.messages.size());
     if (static_cast<int>(m.inbound.size()) < m.nInbound) m.inbound.resize(m.nInbound);
@@ -263,7 +265,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         in.foundMulti = 0;
         if (!record::parse(in.records, msg.bytes, in.layout)) {
             // Cannot happen with messages written by this class; reported, not trusted.
-            error.note("ParticleExchange: malformed record message of ", msg.bytes, " bytes from rank ", msg.rank);
+            error.note("ParticleExchange: malformed record message of ", msg.bytes, " bytes from rank ",
+                       msg.rank);
             in.layout = record::Layout{};
         }
         in.found.assign(in.layout.nMulti, 0);
@@ -311,13 +314,14 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         int owner = -1;
         for (int c = mp.first; c < mp.first + mp.count && owner < 0; ++c) {
             const Impl::Candidate& cand = m.multiCandidates[c];
-            const bool found = cand.outbox < 0 ? m.selfCell[cand.index] >= 0 : m.outboxes[cand.outbox].found[cand.index];
+            const bool found =
+                cand.outbox < 0 ? m.selfCell[cand.index] >= 0 : m.outboxes[cand.outbox].found[cand.index];
             if (found) owner = cand.rank;  // candidates are in ascending rank order
         }
         if (owner < 0) {
             const ParticleState& p = dem[mp.dem];
-            error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (none of the ", mp.count,
-                       " ranks whose CFD box contains it has a cell containing it)");
+            error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (none of the ",
+                       mp.count, " ranks whose CFD box contains it has a cell containing it)");
             continue;
         }
         for (int c = mp.first; c < mp.first + mp.count; ++c) {
@@ -459,7 +463,8 @@ void ParticleExchange::backward(const std::vector<double>& ownedValues, int widt
             continue;
         }
         m.requests.emplace_back();
-        MPI_Isend(src, static_cast<int>(r.count * w), MPI_DOUBLE, r.rank, kTagValues, m.comm, &m.requests.back());
+        MPI_Isend(src, static_cast<int>(r.count * w), MPI_DOUBLE, r.rank, kTagValues, m.comm,
+                  &m.requests.back());
         stats_.bytesSent += static_cast<std::int64_t>(r.count * w * sizeof(double));
     }
     MPI_Waitall(static_cast<int>(m.requests.size()), m.requests.data(), MPI_STATUSES_IGNORE);
@@ -468,7 +473,8 @@ void ParticleExchange::backward(const std::vector<double>& ownedValues, int widt
     for (const Impl::Route& r : m.sendRoutes) {
         if (r.rank == rank_) continue;
         for (std::size_t k = 0; k < r.count; ++k)
-            for (std::size_t j = 0; j < w; ++j) out[m.routeDem[r.first + k] * w + j] = m.values[at + k * w + j];
+            for (std::size_t j = 0; j < w; ++j)
+                out[m.routeDem[r.first + k] * w + j] = m.values[at + k * w + j];
         at += r.count * w;
     }
 }

@@ -51,9 +51,9 @@ struct OwnedParticle {
 // Counts of this rank for the last forward() and the backward() calls after
 // it (forward() resets them).
 struct ExchangeStats {
-    std::int64_t particlesSent = 0;    // particle records sent in forward() (incl. to self)
-    std::int64_t bytesSent = 0;        // bytes sent to other ranks (forward + backward)
-    int partners = 0;                  // distinct ranks sent to (excluding self)
+    std::int64_t particlesSent = 0;  // particle records sent in forward() (incl. to self)
+    std::int64_t bytesSent = 0;      // bytes sent to other ranks (forward + backward)
+    int partners = 0;                // distinct ranks sent to (excluding self)
 };
 
 class ParticleExchange {

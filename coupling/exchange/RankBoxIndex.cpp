@@ -29,8 +29,8 @@ void RankBoxIndex::build(const std::vector<Box>& boxes) {
 
     // About 2 bins per box per axis: a bin then meets only a few boxes for
     // any layout of roughly equal subdomains.
-    const int perAxis = std::clamp(static_cast<int>(std::lround(2 * std::cbrt(nonEmpty_.size()))), 1,
-                                   kMaxBinsPerAxis);
+    const int perAxis =
+        std::clamp(static_cast<int>(std::lround(2 * std::cbrt(nonEmpty_.size()))), 1, kMaxBinsPerAxis);
     for (int a = 0; a < 3; ++a) {
         const double extent = union_.hi[a] - union_.lo[a];
         bins_[a] = extent > 0 ? perAxis : 1;

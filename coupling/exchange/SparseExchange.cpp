@@ -51,7 +51,8 @@ void sparseExchange(MPI_Comm comm, int tag, const std::vector<SparseSend>& sends
             MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
             if (done) break;
         } else {
-            MPI_Testall(static_cast<int>(sendRequests.size()), sendRequests.data(), &done, MPI_STATUSES_IGNORE);
+            MPI_Testall(static_cast<int>(sendRequests.size()), sendRequests.data(), &done,
+                        MPI_STATUSES_IGNORE);
             if (done) {
                 MPI_Ibarrier(comm, &barrier);
                 inBarrier = true;

@@ -131,7 +131,8 @@ inline int countMismatches(const std::vector<OwnedParticle>& got, const std::vec
     int bad = static_cast<int>(std::max(got.size(), want.size()) - std::min(got.size(), want.size()));
     for (std::size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
         const ParticleState &a = got[i].state, &b = want[i].state;
-        bad += !(a.id == b.id && a.x == b.x && a.v == b.v && a.radius == b.radius && got[i].cell == want[i].cell);
+        bad += !(a.id == b.id && a.x == b.x && a.v == b.v && a.radius == b.radius &&
+                 got[i].cell == want[i].cell);
     }
     return bad;
 }

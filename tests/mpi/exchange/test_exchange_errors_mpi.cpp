@@ -3,7 +3,6 @@
 // stage finds it (the DEM owner, the single candidate, or all of several
 // candidates), and the exchange is usable again afterwards.
 #include <catch2/catch.hpp>
-
 #include <limits>
 
 #include "ExchangeScenario.hpp"
@@ -63,7 +62,8 @@ TEST_CASE("a particle outside the mesh on one rank: every rank throws, naming it
         dem.push_back(p);
     }
     CHECK_THROWS_AS(ex.forward(dem, owned), InputError);
-    CHECK_THROWS_WITH(ex.forward(dem, owned), Contains("particle 9999999 at (0.5 0.4 1.5) is outside the CFD mesh"));
+    CHECK_THROWS_WITH(ex.forward(dem, owned),
+                      Contains("particle 9999999 at (0.5 0.4 1.5) is outside the CFD mesh"));
     std::vector<double> out;
     CHECK_THROWS_WITH(ex.backward({}, 1, out), Contains("did not succeed"));
     checkUsable(ex, good);
@@ -71,8 +71,8 @@ TEST_CASE("a particle outside the mesh on one rank: every rank throws, naming it
     // A NaN velocity on rank 0 only.
     dem = good;
     if (rank == 0) dem[5].v[1] = std::numeric_limits<double>::quiet_NaN();
-    CHECK_THROWS_WITH(ex.forward(dem, owned), Contains("particle 5 at") && Contains("non-finite velocity") &&
-                                                  Contains("nan"));
+    CHECK_THROWS_WITH(ex.forward(dem, owned),
+                      Contains("particle 5 at") && Contains("non-finite velocity") && Contains("nan"));
     checkUsable(ex, good);
 }
 
@@ -93,7 +93,8 @@ TEST_CASE("a particle in no cell of its candidate ranks: every rank throws, nami
         p.radius = 1e-3;
         dem.push_back(p);
     }
-    CHECK_THROWS_WITH(ex.forward(dem, owned), Contains("particle 8888888 at (0.1 0.4 1.15) is outside the CFD mesh"));
+    CHECK_THROWS_WITH(ex.forward(dem, owned),
+                      Contains("particle 8888888 at (0.1 0.4 1.15) is outside the CFD mesh"));
     checkUsable(ex, good);
 
     // On the face between the first two slabs, in the hole, held by the last
@@ -108,8 +109,9 @@ TEST_CASE("a particle in no cell of its candidate ranks: every rank throws, nami
             p.radius = 1e-3;
             dem.push_back(p);
         }
-        CHECK_THROWS_WITH(ex.forward(dem, owned), Contains("particle 7777777 at (0.1 0.4 ") &&
-                                                      Contains("is outside the CFD mesh (none of the 2 ranks"));
+        CHECK_THROWS_WITH(ex.forward(dem, owned),
+                          Contains("particle 7777777 at (0.1 0.4 ") &&
+                              Contains("is outside the CFD mesh (none of the 2 ranks"));
         checkUsable(ex, good);
     }
 }

@@ -4,7 +4,6 @@
 // documented order, and backward() brings every value home exactly once.
 // Written for any rank count (ctest runs 1 and 2; 3 was run by hand).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "ExchangeScenario.hpp"
@@ -27,7 +26,8 @@ Vec3 dragForce(const ParticleState& p, const Vec3& cellCentre) {
 
 }  // namespace
 
-TEST_CASE("every particle reaches exactly the rank whose cells contain it, and comes back", "[exchange][mpi]") {
+TEST_CASE("every particle reaches exactly the rank whose cells contain it, and comes back",
+          "[exchange][mpi]") {
     const int rank = worldRank(), size = worldSize();
     std::vector<BoxMesh> slabs;
     for (int p = 0; p < size; ++p) slabs.push_back(cfdSlab(p, size));

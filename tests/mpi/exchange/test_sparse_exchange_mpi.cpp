@@ -3,7 +3,6 @@
 // two alternating tags; each rank receives exactly the messages addressed to
 // it in that round, sorted by source, with their contents intact.
 #include <catch2/catch.hpp>
-
 #include <cstdint>
 #include <cstring>
 
@@ -15,7 +14,8 @@ namespace {
 
 // Deterministic pseudo-random pattern every rank can evaluate for any pair.
 std::uint64_t mix(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull ^ (a * 0xBF58476D1CE4E5B9ull) ^ (b * 0x94D049BB133111EBull) ^ (c + 0x632BE59BD9B4E019ull);
+    std::uint64_t h = 0x9E3779B97F4A7C15ull ^ (a * 0xBF58476D1CE4E5B9ull) ^ (b * 0x94D049BB133111EBull) ^
+                      (c + 0x632BE59BD9B4E019ull);
     h ^= h >> 31;
     h *= 0xD6E8FEB86659FD93ull;
     h ^= h >> 32;
@@ -24,7 +24,8 @@ std::uint64_t mix(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
 bool sends(int round, int from, int to) { return mix(round, from, to) % 3 == 0; }
 std::size_t length(int round, int from, int to) { return mix(to, round, from) % 40; }  // 0 .. 39 words
 std::int64_t word(int round, int from, int to, std::size_t k) {
-    return ((static_cast<std::int64_t>(round) * 1000 + from) * 1000 + to) * 1000 + static_cast<std::int64_t>(k);
+    return ((static_cast<std::int64_t>(round) * 1000 + from) * 1000 + to) * 1000 +
+           static_cast<std::int64_t>(k);
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 // particles raise InputError naming the particle id and the bad value.
 // Many-rank routing is tested in tests/mpi/exchange/.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 #include <random>
@@ -114,7 +113,9 @@ TEST_CASE("a particle outside the mesh is an error naming its id and position, r
     // (no cells where x < 0.3).
     struct HoleyMesh : BoxMesh {
         using BoxMesh::BoxMesh;
-        int findCell(const Vec3& x, int hint) const override { return x[0] < 0.3 ? -1 : BoxMesh::findCell(x, hint); }
+        int findCell(const Vec3& x, int hint) const override {
+            return x[0] < 0.3 ? -1 : BoxMesh::findCell(x, hint);
+        }
     };
     const HoleyMesh holey(kLo, kHi, {5, 4, 6});
     ParticleExchange exHoley(MPI_COMM_SELF, holey);
@@ -136,7 +137,8 @@ TEST_CASE("non-finite position or velocity and bad radius name the id and the va
     dem[2].id = 31;
     dem[2].x[1] = nan;
     CHECK_THROWS_AS(ex.forward(dem, owned), InputError);
-    CHECK_THROWS_WITH(ex.forward(dem, owned), Contains("particle 31 has a non-finite position") && Contains("nan"));
+    CHECK_THROWS_WITH(ex.forward(dem, owned),
+                      Contains("particle 31 has a non-finite position") && Contains("nan"));
 
     dem = randomParticles(8, 5);
     dem[4].id = 32;

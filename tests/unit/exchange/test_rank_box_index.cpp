@@ -2,7 +2,6 @@
 // (closed) box contains it, both for the linear scan (few boxes) and the grid
 // (many boxes); checked against a brute-force scan.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <random>
 

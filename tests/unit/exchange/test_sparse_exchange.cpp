@@ -1,7 +1,6 @@
 // sparseExchange (NBX) on one rank: messages to oneself and no messages at all.
 // The many-rank behaviour is tested in tests/mpi/exchange/.
 #include <catch2/catch.hpp>
-
 #include <cstring>
 
 #include "core/Error.hpp"
