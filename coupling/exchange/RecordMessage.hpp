@@ -70,8 +70,9 @@ inline bool parse(const char* message, std::size_t bytes, Layout& layout) {
     if (bytes < sizeof(std::int64_t)) return false;
     std::int64_t m = 0;
     std::memcpy(&m, message + bytes - sizeof(std::int64_t), sizeof(m));
+    if (m < 0 || static_cast<std::size_t>(m) >= bytes / sizeof(std::int64_t)) return false;
     const std::size_t trailer = (static_cast<std::size_t>(m) + 1) * sizeof(std::int64_t);
-    if (m < 0 || trailer > bytes || (bytes - trailer) % kRecordBytes != 0) return false;
+    if ((bytes - trailer) % kRecordBytes != 0) return false;
     layout.nRecords = (bytes - trailer) / kRecordBytes;
     layout.nMulti = static_cast<std::size_t>(m);
     layout.multi = message + layout.nRecords * kRecordBytes;
