@@ -7,15 +7,34 @@
 // returns per-particle values (forces) from there to the particle's DEM
 // owner. A rank only talks to the ranks whose (inflated) CFD bounding box
 // contains one of its particles: no all-to-all of particle data, no arrays of
-// global size, no gather to rank 0. See docs/architecture.md for the protocol.
+// global size, no gather to rank 0.
 //
-// Errors (a particle in no rank's mesh, NaN position) are raised on ALL ranks
-// together (see core/Collective.hpp), so a bad particle never leaves the
-// other ranks waiting.
+// Protocol of forward() (details and a picture in docs/exchange.md):
+//   1. Candidates: ranks whose CFD box (inflated by `margin`, allgathered once)
+//      contains x. Usually one; several within `margin` of a subdomain face.
+//   2. Records {id, x, v, radius} go to every candidate by the NBX sparse
+//      exchange (exchange/SparseExchange.hpp); each message says which of its
+//      records were ALSO sent elsewhere ("multi" records).
+//   3. Each candidate calls findCell. A record sent to one rank only is owned
+//      there if found, an error if not. For multi records the candidate
+//      replies found/not-found (point to point: both sides know the pattern),
+//      the DEM owner picks the LOWEST rank that found it and tells every
+//      finder keep/drop. Ranks with no multi records skip both rounds.
+//   4. One raiseIfAny: any bad particle throws on all ranks together.
+// Self-sends are plain copies. backward() sends the values back along the
+// routes of the last forward() with plain point-to-point messages.
+//
+// Errors (non-finite position or velocity, radius <= 0, a particle in no
+// rank's cells) are raised on ALL ranks together (see core/Collective.hpp),
+// so a bad particle never leaves the other ranks waiting. forward() and
+// backward() are collective over comm: every rank calls them in the same
+// order. The exchange works on its own duplicate of comm, so its messages
+// never meet other traffic on comm.
 #pragma once
 #include <mpi.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/Particle.hpp"
@@ -29,10 +48,12 @@ struct OwnedParticle {
     int cell = -1;  // local cell index on this rank
 };
 
+// Counts of this rank for the last forward() and the backward() calls after
+// it (forward() resets them).
 struct ExchangeStats {
-    std::int64_t particlesSent = 0;    // particle records sent in forward() (incl. to self)
-    std::int64_t bytesSent = 0;        // bytes sent to other ranks
-    int partners = 0;                  // distinct ranks sent to (excluding self)
+    std::int64_t particlesSent = 0;  // particle records sent in forward() (incl. to self)
+    std::int64_t bytesSent = 0;      // bytes sent to other ranks (forward + backward)
+    int partners = 0;                // distinct ranks sent to (excluding self)
 };
 
 class ParticleExchange {
@@ -40,6 +61,9 @@ public:
     // margin [m]: how much each rank's CFD bounding box is inflated when
     // choosing candidate ranks (covers round-off at subdomain faces).
     ParticleExchange(MPI_Comm comm, const CellLocator& mesh, double margin = 1e-9);
+    ~ParticleExchange();
+    ParticleExchange(const ParticleExchange&) = delete;
+    ParticleExchange& operator=(const ParticleExchange&) = delete;
 
     // Re-read every rank's CFD bounding box (O(nRanks) allgather). Called by
     // the constructor; call again only if the mesh moves.
@@ -47,32 +71,31 @@ public:
 
     // Route `dem` (this rank's DEM particles) to their cell owners. On return
     // `owned` holds the particles whose cell this rank owns, ordered by source
-    // rank then by position in the source's `dem` (deterministic).
+    // rank then by position in the source's `dem` (deterministic). Throws
+    // InputError on all ranks, naming the first bad particle, when a particle
+    // has a non-finite position or velocity, a radius that is not > 0, or lies
+    // in no rank's cells.
     void forward(const std::vector<ParticleState>& dem, std::vector<OwnedParticle>& owned);
 
     // Send `width` doubles per owned particle (ordered as `owned` of the last
     // forward()) back to the DEM owners; `out` receives width doubles per
-    // `dem` particle of the last forward(), in that order.
+    // `dem` particle of the last forward(), in that order. Throws InputError
+    // on all ranks when ownedValues.size() != owned.size() * width, when
+    // width < 1 or differs between ranks, or when the last forward() failed.
     void backward(const std::vector<double>& ownedValues, int width, std::vector<double>& out);
 
     const ExchangeStats& stats() const { return stats_; }
     MPI_Comm comm() const { return comm_; }
 
 private:
+    // Buffers and routes of the last forward(); defined in ParticleExchange.cpp.
     struct Impl;
     MPI_Comm comm_;
     const CellLocator& mesh_;
     double margin_;
     int rank_ = 0, size_ = 1;
-    std::vector<Box> cfdBounds_;  // one per rank
-    // Routing of the last forward(): for each destination rank, the indices
-    // into `dem` sent there (only those accepted as owned), and for each
-    // source rank how many owned particles came from it.
-    std::vector<int> sendRanks_;
-    std::vector<std::vector<int>> sendIndex_;
-    std::vector<int> recvRanks_;
-    std::vector<int> recvCount_;
-    std::size_t nDem_ = 0, nOwned_ = 0;
+    std::vector<Box> cfdBounds_;  // one per rank, not inflated
+    std::unique_ptr<Impl> impl_;
     ExchangeStats stats_;
 };
 

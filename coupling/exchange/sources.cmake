@@ -1,0 +1,5 @@
+# exchange/: many-to-many routing of particles between the DEM and CFD decompositions.
+list(APPEND GRANAIR_COUPLING_SOURCES
+  exchange/SparseExchange.cpp
+  exchange/RankBoxIndex.cpp
+  exchange/ParticleExchange.cpp)
