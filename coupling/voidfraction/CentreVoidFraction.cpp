@@ -1,0 +1,12 @@
+// CentreVoidFraction.cpp: see CentreVoidFraction.hpp.
+#include "voidfraction/CentreVoidFraction.hpp"
+
+namespace granair {
+
+void CentreVoidFraction::stencil(const CellLocator&, const ParticleState&, int centreCell,
+                                 std::vector<CellWeight>& out) const {
+    out.clear();
+    out.push_back({centreCell, 1.0});
+}
+
+}  // namespace granair

@@ -1,0 +1,70 @@
+// GaussianVoidFraction.cpp: see GaussianVoidFraction.hpp.
+#include "voidfraction/GaussianVoidFraction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.hpp"
+
+namespace granair {
+
+GaussianVoidFraction::GaussianVoidFraction(double width, double cutoff) : width_(width), cutoff_(cutoff) {
+    if (!(width > 0) || !std::isfinite(width))
+        fail<InputError>("gaussian void fraction: width = ", width, " [m], expected a finite width > 0");
+    if (!(cutoff >= minCutoff && cutoff <= maxCutoff))
+        fail<InputError>("gaussian void fraction: cutoff = ", cutoff, ", expected ", minCutoff,
+                         " <= cutoff <= ", maxCutoff, " (in widths)");
+}
+
+std::unique_ptr<VoidFractionModel> GaussianVoidFraction::fromDict(const Dictionary& dict) {
+    const double width = dict.getDouble("width");  // rejects missing, non-numeric, NaN, inf
+    if (!(width > 0))
+        fail<InputError>(dict.where("width"), ": value ", width, " out of range, expected width > 0 [m]");
+    const double cutoff = dict.has("cutoff") ? dict.getDouble("cutoff", minCutoff, maxCutoff) : defaultCutoff;
+    return std::make_unique<GaussianVoidFraction>(width, cutoff);
+}
+
+void GaussianVoidFraction::stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,
+                                   std::vector<CellWeight>& out) const {
+    const std::size_t nCells = static_cast<std::size_t>(mesh.nCells());
+    if (stamp_.size() < nCells) stamp_.resize(nCells, 0);  // grows once per mesh, not per particle
+    if (++generation_ == 0) {                              // wrapped after 2^32 particles: clear old stamps
+        std::fill(stamp_.begin(), stamp_.end(), 0u);
+        generation_ = 1;
+    }
+    const double rc2 = (cutoff_ * width_) * (cutoff_ * width_);
+
+    // Pass 1, breadth-first search: collect cells and their squared distance
+    // (kept in out[].weight for now).
+    out.clear();
+    queue_.clear();
+    stamp_[static_cast<std::size_t>(centreCell)] = generation_;
+    double d2min = (mesh.cellCentre(centreCell) - p.x).squaredNorm();
+    out.push_back({centreCell, d2min});
+    queue_.push_back(centreCell);
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+        mesh.cellNeighbours(queue_[head], neighbours_);
+        for (int nb : neighbours_) {
+            std::uint32_t& s = stamp_[static_cast<std::size_t>(nb)];
+            if (s == generation_) continue;
+            s = generation_;
+            const double d2 = (mesh.cellCentre(nb) - p.x).squaredNorm();
+            if (d2 > rc2) continue;  // beyond the cutoff: not used, not expanded
+            out.push_back({nb, d2});
+            queue_.push_back(nb);
+            d2min = std::min(d2min, d2);
+        }
+    }
+
+    // Pass 2: kernel times cell volume, relative to the nearest centre (so the
+    // largest g is 1 and the sum can never underflow to 0), then normalise.
+    const double k = 1.0 / (2.0 * width_ * width_);
+    double sum = 0;
+    for (CellWeight& cw : out) {
+        cw.weight = std::exp(-(cw.weight - d2min) * k) * mesh.cellVolume(cw.cell);
+        sum += cw.weight;
+    }
+    for (CellWeight& cw : out) cw.weight /= sum;
+}
+
+}  // namespace granair
