@@ -50,6 +50,7 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
     }
 
     checkTimeSteps();
+    airSolverLog_ = dict_.getBool("airSolverLog", false);
 
     // CFD side.
     if (settings_.airOn)
@@ -158,7 +159,15 @@ void CoupledRun::coupleAir()
     }
     {
         StageTimers::Scope s(timers_, StageTimers::CFD);
+        // OpenFOAM's per-iteration solver lines would drown the progress
+        // line; `airSolverLog on;` in couplingProperties keeps them.
+        const int level = messageStream::level;
+        if (!airSolverLog_)
+        {
+            messageStream::level = 0;
+        }
         air_->solveStep();
+        messageStream::level = level;
     }
     {
         StageTimers::Scope s(timers_, StageTimers::Mapping);

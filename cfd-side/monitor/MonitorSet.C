@@ -35,7 +35,7 @@ MonitorSet::MonitorSet(const fvMesh& mesh, const ::granair::Dictionary& caseDict
         monitors_.push_back(std::make_unique<OutletMonitor>(mesh, d));
         names_.push_back(name);
         columns_.push_back({name + "_p_Pa", "Pa"});
-        columns_.push_back({name + "_dp" + axisName(d.getVec3("normal")) + "_Pa_m", "Pa/m"});
+        columns_.push_back({name + "_dpd" + axisName(d.getVec3("normal")) + "_Pa_m", "Pa/m"});
         columns_.push_back({name + "_air_kg_s", "kg/s"});
     }
 }
