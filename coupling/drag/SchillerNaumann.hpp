@@ -1,7 +1,7 @@
 // SchillerNaumann.hpp: drag law "SchillerNaumann", an isolated sphere (no
 // crowding correction), for dilute regions only.
 //
-// Equation (Schiller & Naumann 1935; the Re >= 1000 plateau as usual in CFD):
+// Equation (Schiller & Naumann 1933; the Re >= 1000 plateau as usual in CFD):
 //     Re = rho d |u| / mu
 //     Cd = 24/Re (1 + 0.15 Re^0.687)   for Re < 1000
 //     Cd = 0.44                         for Re >= 1000
@@ -17,7 +17,9 @@
 // Parameters: none (fluid rho [kg/m3] and mu [Pa s] come from FluidProperties).
 //
 // Reference:
-//     Schiller, L., Naumann, A. (1935). A drag coefficient correlation.
+//     Schiller, L., Naumann, A. (1933). Ueber die grundlegenden Berechnungen
+//     bei der Schwerkraftaufbereitung (often cited as "A drag coefficient
+//     correlation").
 //     Zeitschrift des Vereins Deutscher Ingenieure 77, 318-320.
 #pragma once
 #include <cmath>

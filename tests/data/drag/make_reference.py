@@ -22,7 +22,7 @@ def particle_volume(d):
 
 
 def cd_schiller_naumann(re):
-    """Schiller & Naumann (1935); 0.44 plateau for Re >= 1000."""
+    """Schiller & Naumann (1933); 0.44 plateau for Re >= 1000."""
     return 24.0 / re * (1.0 + 0.15 * re**0.687) if re < 1000.0 else 0.44
 
 
