@@ -479,4 +479,27 @@ void ParticleExchange::backward(const std::vector<double>& ownedValues, int widt
     }
 }
 
+namespace {
+template <class T>
+std::size_t capacityBytes(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+}  // namespace
+
+std::size_t ParticleExchange::bufferBytes() const {
+    const Impl& m = *impl_;
+    std::size_t n = capacityBytes(m.candidates) + capacityBytes(m.outboxes) + capacityBytes(m.outboxOfRank) +
+                    capacityBytes(m.selfDem) + capacityBytes(m.selfCell) + capacityBytes(m.selfMulti) +
+                    capacityBytes(m.selfKeep) + capacityBytes(m.multis) + capacityBytes(m.multiCandidates) +
+                    capacityBytes(m.inbox.bytes) + capacityBytes(m.inbox.messages) + capacityBytes(m.inbound) +
+                    capacityBytes(m.cells) + capacityBytes(m.sendRoutes) + capacityBytes(m.routeDem) +
+                    capacityBytes(m.recvRoutes) + capacityBytes(m.values) + capacityBytes(m.requests) +
+                    capacityBytes(cfdBounds_);
+    for (const Impl::Outbox& o : m.outboxes)
+        n += capacityBytes(o.message) + capacityBytes(o.multi) + capacityBytes(o.dem) + capacityBytes(o.found) +
+             capacityBytes(o.keep);
+    for (const Impl::Inbound& in : m.inbound) n += capacityBytes(in.found) + capacityBytes(in.keep);
+    return n;
+}
+
 }  // namespace granair
