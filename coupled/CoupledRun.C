@@ -5,6 +5,8 @@
 
 #include "core/Error.hpp"
 
+#include <sys/resource.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -35,6 +37,14 @@ double peakResidentBytes()
         }
     }
     return 0;
+}
+
+// CPU time (user + system) of this process so far [s].
+double cpuSeconds()
+{
+    rusage u;
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_utime.tv_sec + 1e-6*u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6*u.ru_stime.tv_usec;
 }
 
 template<class T>
@@ -255,6 +265,7 @@ void CoupledRun::run()
 {
     ::granair::Progress progress(tStart_, runTime_.endTime().value());
     const double loopStart = MPI_Wtime();
+    const double cpuStart = cpuSeconds();
     double massFlow = 0;
     if (particleVtk_)
     {
@@ -300,6 +311,7 @@ void CoupledRun::run()
         progress.update(runTime_.value(), long(dem_->step()), progressExtra(massFlow), std::cout, k == nSteps_);
     }
     loopSeconds_ = MPI_Wtime() - loopStart;
+    loopCpuSeconds_ = cpuSeconds() - cpuStart;
 }
 
 
@@ -398,6 +410,18 @@ void CoupledRun::reportMemory(std::ostream& os) const
         line, sizeof line,
         "Coupling loop: %.3f s wall for %ld coupling steps, %.4g particle-steps, %.4g particle-steps/s\n",
         loop, long(nSteps_), particleSteps_, loop > 0 ? particleSteps_/loop : 0.0
+    );
+    os << line;
+    // CPU time is less disturbed than wall time by other load on the machine
+    // (not by a rank waiting, busy, for a descheduled one).
+    double cpu[2] = {loopCpuSeconds_, loopCpuSeconds_};
+    MPI_Allreduce(MPI_IN_PLACE, &cpu[0], 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &cpu[1], 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    std::snprintf
+    (
+        line, sizeof line,
+        "Coupling loop CPU time (user + system): %.3f s on the busiest rank, %.3f s on all ranks\n",
+        cpu[0], cpu[1]
     );
     os << line;
 
