@@ -498,13 +498,13 @@ std::size_t ParticleExchange::bufferBytes() const {
     std::size_t n = capacityBytes(m.candidates) + capacityBytes(m.outboxes) + capacityBytes(m.outboxOfRank) +
                     capacityBytes(m.selfDem) + capacityBytes(m.selfCell) + capacityBytes(m.selfMulti) +
                     capacityBytes(m.selfKeep) + capacityBytes(m.multis) + capacityBytes(m.multiCandidates) +
-                    capacityBytes(m.inbox.bytes) + capacityBytes(m.inbox.messages) + capacityBytes(m.inbound) +
-                    capacityBytes(m.cells) + capacityBytes(m.sendRoutes) + capacityBytes(m.routeDem) +
-                    capacityBytes(m.recvRoutes) + capacityBytes(m.values) + capacityBytes(m.requests) +
-                    capacityBytes(cfdBounds_);
+                    capacityBytes(m.inbox.bytes) + capacityBytes(m.inbox.messages) +
+                    capacityBytes(m.inbound) + capacityBytes(m.cells) + capacityBytes(m.sendRoutes) +
+                    capacityBytes(m.routeDem) + capacityBytes(m.recvRoutes) + capacityBytes(m.values) +
+                    capacityBytes(m.requests) + capacityBytes(cfdBounds_);
     for (const Impl::Outbox& o : m.outboxes)
-        n += capacityBytes(o.message) + capacityBytes(o.multi) + capacityBytes(o.dem) + capacityBytes(o.found) +
-             capacityBytes(o.keep);
+        n += capacityBytes(o.message) + capacityBytes(o.multi) + capacityBytes(o.dem) +
+             capacityBytes(o.found) + capacityBytes(o.keep);
     for (const Impl::Inbound& in : m.inbound) n += capacityBytes(in.found) + capacityBytes(in.keep);
     return n;
 }

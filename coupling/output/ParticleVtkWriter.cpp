@@ -83,7 +83,8 @@ constexpr const ArraySpec* kPointData[] = {&kId, &kRadius, &kVelocity, &kForce};
 void declareArray(std::ostringstream& os, const char* indent, const ArraySpec& a, std::uint64_t offset) {
     os << indent << "<DataArray type=\"" << a.type << '"';
     if (a.name) os << " Name=\"" << a.name << '"';
-    os << " NumberOfComponents=\"" << a.components << "\" format=\"appended\" offset=\"" << offset << "\"/>\n";
+    os << " NumberOfComponents=\"" << a.components << "\" format=\"appended\" offset=\"" << offset
+       << "\"/>\n";
 }
 
 // Streams one appended array: the UInt64 byte count, then the values of
@@ -132,13 +133,15 @@ ParticleVtkWriter::ParticleVtkWriter(MPI_Comm comm, std::string directory)
         std::error_code ec;
         std::filesystem::create_directories(directory_, ec);
         if (ec || !std::filesystem::is_directory(directory_))
-            problem = "cannot create the particle output directory '" + directory_ + "': " +
-                      (ec ? ec.message() : std::string("not a directory"));
+            problem = "cannot create the particle output directory '" + directory_ +
+                      "': " + (ec ? ec.message() : std::string("not a directory"));
     }
     raiseIfAny(comm_, problem);
 }
 
-std::string ParticleVtkWriter::indexName(int output) { return "particles_" + std::to_string(output) + ".pvtp"; }
+std::string ParticleVtkWriter::indexName(int output) {
+    return "particles_" + std::to_string(output) + ".pvtp";
+}
 
 std::string ParticleVtkWriter::pieceName(int output, int rank) {
     return "particles_" + std::to_string(output) + "/rank" + std::to_string(rank) + ".vtp";
@@ -200,13 +203,16 @@ std::string ParticleVtkWriter::writePiece(int output, const std::vector<Particle
     if (!f) return "cannot create particle output file '" + path + "': " + std::strerror(errno);
     // Same order as the offsets above.
     bool ok = std::fwrite(head.data(), 1, head.size(), f) == head.size();
-    ok = ok && streamArray<std::int64_t>(f, n, 1, [&](std::size_t i, std::int64_t* o) { *o = particles[i].id; });
+    ok = ok &&
+         streamArray<std::int64_t>(f, n, 1, [&](std::size_t i, std::int64_t* o) { *o = particles[i].id; });
     ok = ok && streamArray<double>(f, n, 1, [&](std::size_t i, double* o) { *o = particles[i].radius; });
     ok = ok && streamArray<double>(f, n, 3, [&](std::size_t i, double* o) { put3(particles[i].v, o); });
     ok = ok && streamArray<double>(f, n, 3, [&](std::size_t i, double* o) { put3(fluidForces[i], o); });
     ok = ok && streamArray<double>(f, n, 3, [&](std::size_t i, double* o) { put3(particles[i].x, o); });
-    ok = ok && streamArray<std::int64_t>(f, n, 1, [](std::size_t i, std::int64_t* o) { *o = std::int64_t(i); });
-    ok = ok && streamArray<std::int64_t>(f, n, 1, [](std::size_t i, std::int64_t* o) { *o = std::int64_t(i + 1); });
+    ok = ok &&
+         streamArray<std::int64_t>(f, n, 1, [](std::size_t i, std::int64_t* o) { *o = std::int64_t(i); });
+    ok = ok &&
+         streamArray<std::int64_t>(f, n, 1, [](std::size_t i, std::int64_t* o) { *o = std::int64_t(i + 1); });
     static const char tail[] = "\n  </AppendedData>\n</VTKFile>\n";
     ok = ok && std::fwrite(tail, 1, sizeof tail - 1, f) == sizeof tail - 1;
     const int err = errno;
@@ -233,8 +239,8 @@ std::string ParticleVtkWriter::writeCollection() const {
     std::ostringstream xml;
     // The collection holds no binary data: the plain 0.1 header that
     // ParaView's .pvd reader has always accepted.
-    xml << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"" << byteOrder()
-        << "\">\n  <Collection>\n";
+    xml << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\""
+        << byteOrder() << "\">\n  <Collection>\n";
     for (std::size_t k = 0; k < times_.size(); ++k)
         xml << "    <DataSet timestep=\"" << formatExact(times_[k]) << "\" group=\"\" part=\"0\" file=\""
             << indexName(static_cast<int>(k)) << "\"/>\n";

@@ -47,15 +47,16 @@ public:
     // every rank together (nothing is written) if forces and particles
     // differ in size on some rank, or the time is not finite or not later
     // than the last output's; and, naming the file, if one cannot be written.
-    void write(double time, const std::vector<ParticleState>& particles, const std::vector<Vec3>& fluidForces);
+    void write(double time, const std::vector<ParticleState>& particles,
+               const std::vector<Vec3>& fluidForces);
 
     int outputs() const { return static_cast<int>(times_.size()); }
     const std::string& directory() const { return directory_; }
     std::string collectionPath() const { return directory_ + "/particles.pvd"; }
 
     // File names relative to the directory.
-    static std::string indexName(int output);             // particles_<k>.pvtp
-    static std::string pieceName(int output, int rank);   // particles_<k>/rank<r>.vtp
+    static std::string indexName(int output);            // particles_<k>.pvtp
+    static std::string pieceName(int output, int rank);  // particles_<k>/rank<r>.vtp
 
 private:
     std::string writePiece(int output, const std::vector<ParticleState>& particles,

@@ -2,10 +2,10 @@
 // ones included), rank 0 indexes every rank's piece and lists the times, the
 // union of the pieces is exactly the particle set, and a bad call on one rank
 // fails on every rank before anything is written.
-#include <catch2/catch.hpp>
 #include <mpi.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -43,7 +43,8 @@ int size() {
 std::string sharedTempDir(const std::string& tag) {
     std::string path;
     if (rank() == 0) {
-        path = (fs::temp_directory_path() / ("granair-vtk-mpi-" + tag + "-" + std::to_string(::getpid()))).string();
+        path = (fs::temp_directory_path() / ("granair-vtk-mpi-" + tag + "-" + std::to_string(::getpid())))
+                   .string();
         fs::remove_all(path);
     }
     int len = static_cast<int>(path.size());
@@ -105,7 +106,8 @@ std::vector<std::uint64_t> checkOutput(const std::string& dir, int k) {
 
 }  // namespace
 
-TEST_CASE("ParticleVtkWriter: one piece per rank, empty pieces valid, rank 0 indexes them", "[output][vtk][mpi]") {
+TEST_CASE("ParticleVtkWriter: one piece per rank, empty pieces valid, rank 0 indexes them",
+          "[output][vtk][mpi]") {
     const std::string dir = sharedTempDir("pieces");
     {
         ParticleVtkWriter w(MPI_COMM_WORLD, dir);
@@ -140,7 +142,8 @@ TEST_CASE("ParticleVtkWriter: one piece per rank, empty pieces valid, rank 0 ind
     MPI_Barrier(MPI_COMM_WORLD);
 }
 
-TEST_CASE("ParticleVtkWriter: a bad call on one rank fails on every rank, nothing written", "[output][vtk][mpi]") {
+TEST_CASE("ParticleVtkWriter: a bad call on one rank fails on every rank, nothing written",
+          "[output][vtk][mpi]") {
     const std::string dir = sharedTempDir("bad");
     {
         ParticleVtkWriter w(MPI_COMM_WORLD, dir);

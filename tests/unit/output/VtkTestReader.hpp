@@ -155,7 +155,8 @@ inline Piece readPiece(const std::string& path) {
             for (const char* k : {"NumberOfLines", "NumberOfStrips", "NumberOfPolys"})
                 if (t.attributes.at(k) != "0") throw std::runtime_error(path + ": " + k + " != 0");
         }
-        if ((t.name == "PointData" || t.name == "Points" || t.name == "Verts") && !t.closing) section = t.name;
+        if ((t.name == "PointData" || t.name == "Points" || t.name == "Verts") && !t.closing)
+            section = t.name;
         if (t.name != "DataArray") continue;
         Array a;
         a.section = section;
@@ -164,9 +165,11 @@ inline Piece readPiece(const std::string& path) {
         a.components = std::stoi(t.attributes.at("NumberOfComponents"));
         if (t.attributes.at("format") != "appended") throw std::runtime_error(path + ": not appended");
         const std::size_t offset = std::stoull(t.attributes.at("offset"));
-        if (offset != expectedOffset) throw std::runtime_error(path + ": array " + a.name + " not where expected");
+        if (offset != expectedOffset)
+            throw std::runtime_error(path + ": array " + a.name + " not where expected");
         std::uint64_t count = 0;
-        if (base + offset + 8 > closeAt) throw std::runtime_error(path + ": array " + a.name + " past the end");
+        if (base + offset + 8 > closeAt)
+            throw std::runtime_error(path + ": array " + a.name + " past the end");
         std::memcpy(&count, file.data() + base + offset, 8);
         if (base + offset + 8 + count > closeAt)
             throw std::runtime_error(path + ": array " + a.name + " longer than the file");
@@ -184,7 +187,8 @@ inline Piece readPiece(const std::string& path) {
 
 // Tags with a given name in a small XML file (.pvtp, .pvd), after checking
 // the whole file is well formed and its root is <VTKFile type=...>.
-inline std::vector<Tag> tagsNamed(const std::string& path, const std::string& rootType, const std::string& name) {
+inline std::vector<Tag> tagsNamed(const std::string& path, const std::string& rootType,
+                                  const std::string& name) {
     const std::vector<Tag> tags = parseTags(readAll(path));
     if (tags.empty() || tags[0].name != "VTKFile" || tags[0].attributes.at("type") != rootType)
         throw std::runtime_error(path + ": root is not <VTKFile type=\"" + rootType + "\">");

@@ -2,10 +2,10 @@
 // bit for bit through an independent reader (VtkTestReader.hpp), the index
 // and the collection name the right files and times, an empty rank writes a
 // valid empty piece, and bad calls fail before anything is written.
-#include <catch2/catch.hpp>
 #include <mpi.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -62,7 +62,8 @@ std::vector<Vec3> awkwardForces() {
 // Bit-for-bit equality of doubles (distinguishes -0.0 from 0.0).
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-void checkPiece(const vtktest::Piece& piece, const std::vector<ParticleState>& ps, const std::vector<Vec3>& forces) {
+void checkPiece(const vtktest::Piece& piece, const std::vector<ParticleState>& ps,
+                const std::vector<Vec3>& forces) {
     const std::size_t n = ps.size();
     REQUIRE(piece.points == n);
     REQUIRE(piece.verts == n);
@@ -171,7 +172,8 @@ TEST_CASE("ParticleVtkWriter: a large set streams in blocks and reads back", "[o
     std::vector<ParticleState> ps;
     std::vector<Vec3> forces;
     for (int i = 0; i < 2500; ++i) {
-        ps.push_back(particle(1000 + i, Vec3(i * 1e-4, -i / 3.0, 1.0 / (i + 1)), Vec3(i, -i, 0.5 * i), 1e-4 + i * 1e-9));
+        ps.push_back(particle(1000 + i, Vec3(i * 1e-4, -i / 3.0, 1.0 / (i + 1)), Vec3(i, -i, 0.5 * i),
+                              1e-4 + i * 1e-9));
         forces.push_back(Vec3(std::sin(i), std::cos(i), -i * 1e-6));
     }
     w.write(0.25, ps, forces);
@@ -203,9 +205,9 @@ TEST_CASE("ParticleVtkWriter: bad calls fail clearly and write nothing", "[outpu
         const fs::path file = tmp.path / "plain-file";
         std::ofstream(file) << "not a directory\n";
         REQUIRE_THROWS_AS(ParticleVtkWriter(MPI_COMM_SELF, (file / "sub").string()), granair::InputError);
-        REQUIRE_THROWS_WITH(ParticleVtkWriter(MPI_COMM_SELF, (file / "sub").string()),
-                            Contains("cannot create the particle output directory") &&
-                                Contains((file / "sub").string()));
+        REQUIRE_THROWS_WITH(
+            ParticleVtkWriter(MPI_COMM_SELF, (file / "sub").string()),
+            Contains("cannot create the particle output directory") && Contains((file / "sub").string()));
     }
     SECTION("a piece that cannot be written is named") {
         // The folder of output 0 exists as a plain file: the piece cannot be created.
