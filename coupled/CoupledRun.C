@@ -203,28 +203,32 @@ void CoupledRun::checkTimeSteps()
 }
 
 
-void CoupledRun::coupleAir()
+void CoupledRun::mapParticles()
 {
     {
         StageTimers::Scope s(timers_, StageTimers::Exchange);
         exchange_->forward(particles_, owned_);
     }
-    {
-        StageTimers::Scope s(timers_, StageTimers::Mapping);
-        const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
-        step_->particlesToCells
-        (
-            owned_, U,
-            air_->voidfraction().primitiveFieldRef().data(),
-            air_->Ksl().primitiveFieldRef().data(),
-            reinterpret_cast<double*>(air_->Us().primitiveFieldRef().data())
-        );
-        air_->voidfraction().correctBoundaryConditions();
-        air_->Ksl().correctBoundaryConditions();
-        air_->Us().correctBoundaryConditions();
-        floorHitsTotal_ += step_->stats().floorHits;
-        minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
-    }
+    StageTimers::Scope s(timers_, StageTimers::Mapping);
+    const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
+    step_->particlesToCells
+    (
+        owned_, U,
+        air_->voidfraction().primitiveFieldRef().data(),
+        air_->Ksl().primitiveFieldRef().data(),
+        reinterpret_cast<double*>(air_->Us().primitiveFieldRef().data())
+    );
+    air_->voidfraction().correctBoundaryConditions();
+    air_->Ksl().correctBoundaryConditions();
+    air_->Us().correctBoundaryConditions();
+}
+
+
+void CoupledRun::coupleAir()
+{
+    mapParticles();
+    floorHitsTotal_ += step_->stats().floorHits;
+    minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
     {
         StageTimers::Scope s(timers_, StageTimers::CFD);
         // OpenFOAM's per-iteration solver lines would drown the progress
@@ -267,10 +271,23 @@ void CoupledRun::run()
     const double loopStart = MPI_Wtime();
     const double cpuStart = cpuSeconds();
     double massFlow = 0;
+    if (air_ || particleVtk_)
+    {
+        StageTimers::Scope s(timers_, StageTimers::DEM);
+        dem_->getParticles(particles_);
+    }
+    if (air_)
+    {
+        // The void fraction at the start time is that of the particles there
+        // (not 0/voidfraction or its default 1): it becomes the old-time
+        // value of the first step, whose d(eps)/dt would otherwise see every
+        // particle appear within one CFD step and push the air out of the
+        // bed with a pressure kick many times the particles' weight.
+        mapParticles();
+    }
     if (particleVtk_)
     {
         StageTimers::Scope s(timers_, StageTimers::Output);
-        dem_->getParticles(particles_);
         writeParticles(0);
     }
     for (label k = 1; k <= nSteps_; ++k)
