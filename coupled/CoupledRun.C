@@ -5,7 +5,12 @@
 
 #include "core/Error.hpp"
 
+#include <sys/resource.h>
+
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -15,6 +20,40 @@ namespace granair
 {
 
 using ::granair::StageTimers;
+
+namespace
+{
+
+// Peak resident memory of this process [bytes]: VmHWM of /proc/self/status
+// (Linux); 0 where that file does not exist.
+double peakResidentBytes()
+{
+    std::ifstream in("/proc/self/status");
+    for (std::string line; std::getline(in, line);)
+    {
+        if (line.compare(0, 6, "VmHWM:") == 0)
+        {
+            return 1024.0*std::strtod(line.c_str() + 6, nullptr);   // given in kB
+        }
+    }
+    return 0;
+}
+
+// CPU time (user + system) of this process so far [s].
+double cpuSeconds()
+{
+    rusage u;
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_utime.tv_sec + 1e-6*u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6*u.ru_stime.tv_usec;
+}
+
+template<class T>
+double capacityBytes(const std::vector<T>& v)
+{
+    return double(v.capacity()*sizeof(T));
+}
+
+} // namespace
 
 CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
 :
@@ -63,6 +102,10 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
             settings_, *locator_, ::granair::FluidProperties{air_->rho(), air_->mu()}
         );
         monitors_ = std::make_unique<MonitorSet>(mesh_, dict_);
+        // The coupling fields go to the time directories with U and p (only
+        // at the controlDict write times, so it costs nothing in between).
+        air_->Ksl().writeOpt() = IOobject::AUTO_WRITE;
+        air_->Us().writeOpt() = IOobject::AUTO_WRITE;
     }
 
     // Time series.
@@ -88,6 +131,25 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
         MPI_COMM_WORLD, caseDir/"postProcessing"/"timeSeries", cols
     );
 
+    // Particles for ParaView (fields: OpenFOAM's own writeControl).
+    if (dict_.has("output"))
+    {
+        const ::granair::Dictionary& d = dict_.subDict("output");
+        vtkInterval_ = d.getDouble("vtkInterval");
+        if (!(vtkInterval_ > 0) || !std::isfinite(vtkInterval_))
+        {
+            ::granair::fail<::granair::CollectiveError>
+            (
+                d.where("vtkInterval"), " = ", vtkInterval_,
+                ": expected a positive interval of simulated time [s]"
+            );
+        }
+        particleVtk_ = std::make_unique<::granair::ParticleVtkWriter>
+        (
+            MPI_COMM_WORLD, caseDir/"postProcessing"/"particles"
+        );
+    }
+
     Info<< "granairFoam: " << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, "
         << dem_->nGlobal() << " particles, " << Pstream::nProcs() << " rank(s)" << nl
         << "  air " << (settings_.airOn ? "on" : "OFF (DEM-only reference run)")
@@ -100,7 +162,13 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
             << ", coarse graining s = " << settings_.coarseGrainingFactor;
     }
     Info<< nl << "  " << nSteps_ << " coupling steps from t = " << tStart_ << " s to "
-        << runTime_.endTime().value() << " s" << nl << endl;
+        << runTime_.endTime().value() << " s" << nl;
+    if (particleVtk_)
+    {
+        Info<< "  particles to postProcessing/particles/particles.pvd every " << vtkInterval_
+            << " s" << nl;
+    }
+    Info<< endl;
 }
 
 
@@ -135,28 +203,32 @@ void CoupledRun::checkTimeSteps()
 }
 
 
-void CoupledRun::coupleAir()
+void CoupledRun::mapParticles()
 {
     {
         StageTimers::Scope s(timers_, StageTimers::Exchange);
         exchange_->forward(particles_, owned_);
     }
-    {
-        StageTimers::Scope s(timers_, StageTimers::Mapping);
-        const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
-        step_->particlesToCells
-        (
-            owned_, U,
-            air_->voidfraction().primitiveFieldRef().data(),
-            air_->Ksl().primitiveFieldRef().data(),
-            reinterpret_cast<double*>(air_->Us().primitiveFieldRef().data())
-        );
-        air_->voidfraction().correctBoundaryConditions();
-        air_->Ksl().correctBoundaryConditions();
-        air_->Us().correctBoundaryConditions();
-        floorHitsTotal_ += step_->stats().floorHits;
-        minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
-    }
+    StageTimers::Scope s(timers_, StageTimers::Mapping);
+    const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
+    step_->particlesToCells
+    (
+        owned_, U,
+        air_->voidfraction().primitiveFieldRef().data(),
+        air_->Ksl().primitiveFieldRef().data(),
+        reinterpret_cast<double*>(air_->Us().primitiveFieldRef().data())
+    );
+    air_->voidfraction().correctBoundaryConditions();
+    air_->Ksl().correctBoundaryConditions();
+    air_->Us().correctBoundaryConditions();
+}
+
+
+void CoupledRun::coupleAir()
+{
+    mapParticles();
+    floorHitsTotal_ += step_->stats().floorHits;
+    minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
     {
         StageTimers::Scope s(timers_, StageTimers::CFD);
         // OpenFOAM's per-iteration solver lines would drown the progress
@@ -196,7 +268,28 @@ void CoupledRun::coupleAir()
 void CoupledRun::run()
 {
     ::granair::Progress progress(tStart_, runTime_.endTime().value());
+    const double loopStart = MPI_Wtime();
+    const double cpuStart = cpuSeconds();
     double massFlow = 0;
+    if (air_ || particleVtk_)
+    {
+        StageTimers::Scope s(timers_, StageTimers::DEM);
+        dem_->getParticles(particles_);
+    }
+    if (air_)
+    {
+        // The void fraction at the start time is that of the particles there
+        // (not 0/voidfraction or its default 1): it becomes the old-time
+        // value of the first step, whose d(eps)/dt would otherwise see every
+        // particle appear within one CFD step and push the air out of the
+        // bed with a pressure kick many times the particles' weight.
+        mapParticles();
+    }
+    if (particleVtk_)
+    {
+        StageTimers::Scope s(timers_, StageTimers::Output);
+        writeParticles(0);
+    }
     for (label k = 1; k <= nSteps_; ++k)
     {
         {
@@ -224,9 +317,41 @@ void CoupledRun::run()
             }
             writeRow(runTime_.value(), massFlow);
             runTime_.write();
+            if (particleVtk_)
+            {
+                writeParticles(k);
+            }
         }
+        const double nParticles = lastRow_.at(discharge_ ? 3 : 1);
+        particleSteps_ += nParticles*settings_.couplingInterval;
+        peakParticles_ = std::max(peakParticles_, nParticles);
         progress.update(runTime_.value(), long(dem_->step()), progressExtra(massFlow), std::cout, k == nSteps_);
     }
+    loopSeconds_ = MPI_Wtime() - loopStart;
+    loopCpuSeconds_ = cpuSeconds() - cpuStart;
+}
+
+
+void CoupledRun::writeParticles(label k)
+{
+    // Due at tStart + m vtkInterval (m = 1, 2, ...), at the start and at the
+    // end; the tolerance absorbs the round-off of the accumulated time.
+    const double t = runTime_.value();
+    const double tol = 1e-6*runTime_.deltaTValue();
+    if (k > 0 && k < nSteps_ && t < tStart_ + vtkNext_*vtkInterval_ - tol)
+    {
+        return;
+    }
+    // The fluid force of this coupling step (zero at the start and with the
+    // air off), in the order of particles_.
+    std::vector<::granair::Vec3> zero;
+    const bool haveForces = air_ && k > 0 && forces_.size() == particles_.size();
+    if (!haveForces)
+    {
+        zero.assign(particles_.size(), ::granair::Vec3::Zero());
+    }
+    particleVtk_->write(t, particles_, haveForces ? forces_ : zero);
+    vtkNext_ = label(std::floor((t - tStart_ + tol)/vtkInterval_)) + 1;
 }
 
 
@@ -286,7 +411,71 @@ void CoupledRun::finish()
             << "Air continuity error (cumulative): " << air_->cumulativeContinuityError() << "\n";
     }
     timers_.report(MPI_COMM_WORLD, os);
+    reportMemory(os);
     Info<< os.str().c_str() << endl;
+}
+
+
+void CoupledRun::reportMemory(std::ostream& os) const
+{
+    // The coupling loop alone (the timing table above includes the set-up).
+    double loop = loopSeconds_;
+    MPI_Allreduce(MPI_IN_PLACE, &loop, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    char line[256];
+    std::snprintf
+    (
+        line, sizeof line,
+        "Coupling loop: %.3f s wall for %ld coupling steps, %.4g particle-steps, %.4g particle-steps/s\n",
+        loop, long(nSteps_), particleSteps_, loop > 0 ? particleSteps_/loop : 0.0
+    );
+    os << line;
+    // CPU time is less disturbed than wall time by other load on the machine
+    // (not by a rank waiting, busy, for a descheduled one).
+    double cpu[2] = {loopCpuSeconds_, loopCpuSeconds_};
+    MPI_Allreduce(MPI_IN_PLACE, &cpu[0], 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &cpu[1], 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    std::snprintf
+    (
+        line, sizeof line,
+        "Coupling loop CPU time (user + system): %.3f s on the busiest rank, %.3f s on all ranks\n",
+        cpu[0], cpu[1]
+    );
+    os << line;
+
+    // Peak resident memory, and what the coupling layer's own buffers hold
+    // (vector capacities = their high-water marks; OpenFOAM's extra fields
+    // voidfraction, Ksl, Us and LIGGGHTS' fluid-force arrays not included).
+    const double hwm = peakResidentBytes();
+    double hwmMax = hwm;
+    MPI_Allreduce(MPI_IN_PLACE, &hwmMax, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    double sums[6] =
+    {
+        hwm,
+        capacityBytes(particles_) + capacityBytes(owned_) + capacityBytes(ownedForces_)
+      + capacityBytes(demForces_) + capacityBytes(forces_),
+        exchange_ ? double(exchange_->bufferBytes()) : 0.0,
+        step_ ? double(step_->particleBufferBytes()) : 0.0,
+        step_ ? double(step_->cellBufferBytes()) : 0.0,
+        double(mesh_.nCells())
+    };
+    MPI_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    const double mib = 1024.0*1024.0;
+    std::snprintf
+    (
+        line, sizeof line, "Peak memory (VmHWM): %.1f MiB on the largest rank, %.1f MiB on all %d rank(s)\n",
+        hwmMax/mib, sums[0]/mib, Pstream::nProcs()
+    );
+    os << line;
+    const double np = std::max(peakParticles_, 1.0), nc = std::max(sums[5], 1.0);
+    std::snprintf
+    (
+        line, sizeof line,
+        "Coupling buffers (all ranks): %.1f B/particle (run %.1f, exchange %.1f, coupling step %.1f) "
+        "for %.0f particles; %.1f B/cell for %.0f cells\n",
+        (sums[1] + sums[2] + sums[3])/np, sums[1]/np, sums[2]/np, sums[3]/np, peakParticles_,
+        sums[4]/nc, sums[5]
+    );
+    os << line;
 }
 
 } // namespace granair

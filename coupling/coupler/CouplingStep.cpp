@@ -115,4 +115,18 @@ void CouplingStep::cellsToParticles(const double* Ucell, const double* gradPcell
     }
 }
 
+namespace {
+template <class T>
+std::size_t capacityBytes(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+}  // namespace
+
+std::size_t CouplingStep::particleBufferBytes() const {
+    return capacityBytes(offset_) + capacityBytes(weights_) + capacityBytes(beta_) + capacityBytes(volume_) +
+           capacityBytes(velocity_) + capacityBytes(drag_) + capacityBytes(scratch_);
+}
+
+std::size_t CouplingStep::cellBufferBytes() const { return capacityBytes(solid_) + capacityBytes(sumBeta_); }
+
 }  // namespace granair

@@ -22,6 +22,7 @@
 // Cell arrays are plain contiguous doubles (3 per cell for vectors), so the
 // cfd-side can pass OpenFOAM's field storage without copies.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -53,6 +54,11 @@ public:
     const std::vector<double>& dragForces() const { return drag_; }
 
     const CouplingStepStats& stats() const { return stats_; }
+
+    // Bytes held by this object's buffers (vector capacities, i.e. their high
+    // water mark): per-particle ones and per-cell ones, for the memory report.
+    std::size_t particleBufferBytes() const;
+    std::size_t cellBufferBytes() const;
 
 private:
     const CouplingSettings& settings_;

@@ -245,10 +245,16 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
     sparseExchange(m.comm, kTagRecords[m.forwardCalls++ % 2], sends, m.inbox);
 
     // ---- 3. locate: own records, then inbound ones ----
+    // The cell of the previous record is the hint for the next: DEM codes
+    // keep their particles sorted in space, so neighbours in the list are
+    // mostly in the same or an adjacent cell, which the locator tests before
+    // its global search (a full search per particle costs several times more).
+    int hint = -1;
     m.selfCell.resize(m.selfDem.size());
     for (std::size_t j = 0; j < m.selfDem.size(); ++j) {
         const ParticleState& p = dem[m.selfDem[j]];
-        m.selfCell[j] = mesh_.findCell(p.x);
+        m.selfCell[j] = mesh_.findCell(p.x, hint);
+        if (m.selfCell[j] >= 0) hint = m.selfCell[j];
         if (m.selfCell[j] < 0 && !m.selfMulti[j])
             error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
                        "'s CFD box but in none of its cells)");
@@ -273,7 +279,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         std::size_t mi = 0;
         for (std::size_t k = 0; k < in.layout.nRecords; ++k) {
             const ParticleState p = record::read(in.records, k);
-            const int cell = mesh_.findCell(p.x);
+            const int cell = mesh_.findCell(p.x, hint);
+            if (cell >= 0) hint = cell;
             m.cells.push_back(cell);
             if (mi < in.layout.nMulti && record::multiAt(in.layout, mi) == static_cast<std::int64_t>(k)) {
                 in.found[mi++] = cell >= 0;
@@ -477,6 +484,29 @@ void ParticleExchange::backward(const std::vector<double>& ownedValues, int widt
                 out[m.routeDem[r.first + k] * w + j] = m.values[at + k * w + j];
         at += r.count * w;
     }
+}
+
+namespace {
+template <class T>
+std::size_t capacityBytes(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+}  // namespace
+
+std::size_t ParticleExchange::bufferBytes() const {
+    const Impl& m = *impl_;
+    std::size_t n = capacityBytes(m.candidates) + capacityBytes(m.outboxes) + capacityBytes(m.outboxOfRank) +
+                    capacityBytes(m.selfDem) + capacityBytes(m.selfCell) + capacityBytes(m.selfMulti) +
+                    capacityBytes(m.selfKeep) + capacityBytes(m.multis) + capacityBytes(m.multiCandidates) +
+                    capacityBytes(m.inbox.bytes) + capacityBytes(m.inbox.messages) +
+                    capacityBytes(m.inbound) + capacityBytes(m.cells) + capacityBytes(m.sendRoutes) +
+                    capacityBytes(m.routeDem) + capacityBytes(m.recvRoutes) + capacityBytes(m.values) +
+                    capacityBytes(m.requests) + capacityBytes(cfdBounds_);
+    for (const Impl::Outbox& o : m.outboxes)
+        n += capacityBytes(o.message) + capacityBytes(o.multi) + capacityBytes(o.dem) +
+             capacityBytes(o.found) + capacityBytes(o.keep);
+    for (const Impl::Inbound& in : m.inbound) n += capacityBytes(in.found) + capacityBytes(in.keep);
+    return n;
 }
 
 }  // namespace granair

@@ -85,6 +85,10 @@ public:
     void backward(const std::vector<double>& ownedValues, int width, std::vector<double>& out);
 
     const ExchangeStats& stats() const { return stats_; }
+    // Bytes held by the exchange's buffers on this rank (vector capacities,
+    // i.e. their high-water mark; the O(nRanks) box index is not counted),
+    // for the memory report.
+    std::size_t bufferBytes() const;
     MPI_Comm comm() const { return comm_; }
 
 private:

@@ -1,1 +1,2 @@
 list(APPEND GRANAIR_COUPLING_SOURCES output/TimeSeriesWriter.cpp)
+list(APPEND GRANAIR_COUPLING_SOURCES output/ParticleVtkWriter.cpp)

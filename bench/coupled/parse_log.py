@@ -1,0 +1,60 @@
+"""parse_log.py: the numbers granairFoam prints at the end of a run (timing
+breakdown, coupling loop, peak memory, coupling buffers), read from its log.
+Shared by bench/coupled/report.py and bench/memory/report.py."""
+
+import re
+
+STAGES = {
+    "DEM (LIGGGHTS)": "dem_s",
+    "CFD (air solver)": "cfd_s",
+    "void fraction + mapping": "mapping_s",
+    "exchange (MPI)": "exchange_s",
+    "output": "output_s",
+    "other (setup, waits)": "other_s",
+    "total wall time": "total_s",
+}
+
+_NUM = r"([-+0-9.eE]+)"
+
+
+def parse_log(path):
+    """Dict of the figures in a granairFoam log; raises ValueError naming
+    the log and the line that is missing."""
+    with open(path, errors="replace") as f:
+        text = f.read()
+    out = {}
+    for label, key in STAGES.items():
+        m = re.search(r"^\s+" + re.escape(label) + r"\s+" + _NUM + r" s", text, re.M)
+        if not m:
+            raise ValueError(f"{path}: no timing line '{label}' (did the run finish?)")
+        out[key] = float(m.group(1))
+    m = re.search(r"Coupling loop: " + _NUM + r" s wall for (\d+) coupling steps, " + _NUM +
+                  r" particle-steps, " + _NUM + r" particle-steps/s", text)
+    if not m:
+        raise ValueError(f"{path}: no 'Coupling loop:' line")
+    out["loop_s"] = float(m.group(1))
+    out["coupling_steps"] = int(m.group(2))
+    out["particle_steps"] = float(m.group(3))
+    out["throughput"] = float(m.group(4))
+    m = re.search(r"Coupling loop CPU time \(user \+ system\): " + _NUM + r" s on the busiest rank, " + _NUM +
+                  r" s on all ranks", text)
+    if not m:
+        raise ValueError(f"{path}: no 'Coupling loop CPU time' line")
+    out["cpu_max_s"] = float(m.group(1))
+    out["cpu_sum_s"] = float(m.group(2))
+    m = re.search(r"Peak memory \(VmHWM\): " + _NUM + r" MiB on the largest rank, " + _NUM +
+                  r" MiB on all (\d+) rank", text)
+    if not m:
+        raise ValueError(f"{path}: no 'Peak memory' line")
+    out["hwm_max_mib"] = float(m.group(1))
+    out["hwm_sum_mib"] = float(m.group(2))
+    out["ranks"] = int(m.group(3))
+    m = re.search(r"Coupling buffers \(all ranks\): " + _NUM + r" B/particle \(run " + _NUM + r", exchange " +
+                  _NUM + r", coupling step " + _NUM + r"\) for " + _NUM + r" particles; " + _NUM +
+                  r" B/cell for " + _NUM + r" cells", text)
+    if not m:
+        raise ValueError(f"{path}: no 'Coupling buffers' line")
+    keys = ["buf_per_particle", "buf_run", "buf_exchange", "buf_step", "buf_particles", "buf_per_cell", "buf_cells"]
+    for k, v in zip(keys, m.groups()):
+        out[k] = float(v)
+    return out

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# bench/coupled/run.sh: coupled vs DEM-only throughput, mapping + exchange
+# share, and cost per particle-step across sizes (a benchmark, not a test).
+#
+#   bench/coupled/run.sh [--sizes "1000 10000 100000"] [--steps 20] [--np 2]
+#                        [--repeat 1] [--work DIR] [--results DIR] [--name coupled]
+#
+# For every size: writes the packed-column case (make_case.py), meshes and
+# decomposes it, runs granairFoam with `air on;` and with `air off;` for
+# --steps coupling steps (50 DEM steps each) on --np ranks, --repeat times
+# each, then report.py writes <results>/<name>.{md,csv} (default coupled). Needs a build with
+# OpenFOAM and LIGGGHTS (build/bin/granairFoam; GRANAIR_BUILD overrides).
+# Work folders default to build/bench-coupled; results to bench/results.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=../../tools/case-lib.sh
+. "$here/../../tools/case-lib.sh"
+
+sizes="1000 10000 100000" steps=20 np=2 repeat=1 name=coupled
+work="$GRANAIR_BUILD/bench-coupled" results="$here/../results"
+while [ $# -gt 0 ]; do
+  case $1 in
+    --sizes) sizes=$2; shift 2 ;;
+    --steps) steps=$2; shift 2 ;;
+    --np) np=$2; shift 2 ;;
+    --repeat) repeat=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    --results) results=$2; shift 2 ;;
+    --name) name=$2; shift 2 ;;
+    *) echo "usage: $0 [--sizes \"N ...\"] [--steps S] [--np P] [--repeat R] [--work DIR] [--results DIR] [--name NAME]" >&2
+       exit 2 ;;
+  esac
+done
+command -v granairFoam >/dev/null || { echo "bench/coupled: granairFoam not found in $GRANAIR_BUILD/bin" >&2; exit 1; }
+
+mkdir -p "$work"
+echo "$(date -u +%Y-%m-%dT%H:%MZ), $(nproc) cores, load average at start $(cut -d' ' -f1-3 /proc/loadavg)" \
+  > "$work/machine.txt"
+# Repeats outermost and air off/on back to back, so both see the same load.
+for r in $(seq 1 "$repeat"); do
+  for n in $sizes; do
+    for air in off on; do
+      dir="$work/${n}_${air}_${r}"
+      rm -rf "$dir"
+      "$GRANAIR_PYTHON" "$here/make_case.py" --out "$dir" --particles "$n" --air "$air" --steps "$steps" --np "$np" \
+        > /dev/null
+      touch "$dir/bench.foam"   # ParaView opens the case through this empty file
+      granair_mesh "$dir"
+      granair_decompose "$dir" "$np"
+      granair_run "$dir" "$np" granairFoam
+      echo "bench/coupled: $n particles, air $air, repeat $r: $(grep -h 'Coupling loop' "$dir/log/granairFoam.log")"
+    done
+  done
+done
+echo "load average at end $(cut -d' ' -f1-3 /proc/loadavg)" >> "$work/machine.txt"
+"$GRANAIR_PYTHON" "$here/report.py" "$work" "$results" "$name"
