@@ -246,6 +246,7 @@ void CoupledRun::coupleAir()
         const volVectorField gradP(fvc::grad(air_->p()));
         step_->cellsToParticles
         (
+            owned_,
             reinterpret_cast<const double*>(air_->U().primitiveField().cdata()),
             reinterpret_cast<const double*>(gradP.primitiveField().cdata()),
             ownedForces_
@@ -255,13 +256,8 @@ void CoupledRun::coupleAir()
         StageTimers::Scope s(timers_, StageTimers::Exchange);
         exchange_->backward(ownedForces_, 3, demForces_);
     }
-    forces_.resize(particles_.size());
-    for (size_t i = 0; i < particles_.size(); ++i)
-    {
-        forces_[i] = ::granair::Vec3(demForces_[3*i], demForces_[3*i + 1], demForces_[3*i + 2]);
-    }
     StageTimers::Scope s(timers_, StageTimers::DEM);
-    dem_->setFluidForces(forces_);
+    dem_->setFluidForces(demForces_.data(), particles_.size());
 }
 
 
@@ -344,13 +340,8 @@ void CoupledRun::writeParticles(label k)
     }
     // The fluid force of this coupling step (zero at the start and with the
     // air off), in the order of particles_.
-    std::vector<::granair::Vec3> zero;
-    const bool haveForces = air_ && k > 0 && forces_.size() == particles_.size();
-    if (!haveForces)
-    {
-        zero.assign(particles_.size(), ::granair::Vec3::Zero());
-    }
-    particleVtk_->write(t, particles_, haveForces ? forces_ : zero);
+    const bool haveForces = air_ && k > 0 && demForces_.size() == 3*particles_.size();
+    particleVtk_->write(t, particles_, haveForces ? demForces_.data() : nullptr, particles_.size());
     vtkNext_ = label(std::floor((t - tStart_ + tol)/vtkInterval_)) + 1;
 }
 
@@ -452,7 +443,7 @@ void CoupledRun::reportMemory(std::ostream& os) const
     {
         hwm,
         capacityBytes(particles_) + capacityBytes(owned_) + capacityBytes(ownedForces_)
-      + capacityBytes(demForces_) + capacityBytes(forces_),
+      + capacityBytes(demForces_),
         exchange_ ? double(exchange_->bufferBytes()) : 0.0,
         step_ ? double(step_->particleBufferBytes()) : 0.0,
         step_ ? double(step_->cellBufferBytes()) : 0.0,

@@ -147,18 +147,24 @@ void LiggghtsDriver::enableFluidForces() {
 }
 
 void LiggghtsDriver::setFluidForces(const std::vector<Vec3>& forces) {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three contiguous doubles");
+    setFluidForces(forces.empty() ? nullptr : forces.front().data(), forces.size());
+}
+
+void LiggghtsDriver::setFluidForces(const double* xyz, std::size_t n) {
+    const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>> forces(xyz, 3, static_cast<Eigen::Index>(n));
     if (!forces_) fail<Error>("LiggghtsDriver::setFluidForces called before enableFluidForces()");
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     const int nlocal = atom.nlocal;
     std::ostringstream problem;
     problem.precision(10);
-    if (forces.size() != lastTags_.size())
-        problem << "setFluidForces: " << forces.size() << " forces given for "
+    if (n != lastTags_.size())
+        problem << "setFluidForces: " << n << " forces given for "
                 << lastTags_.size() << " particles of the last getParticles() call on this rank";
-    for (std::size_t k = 0; problem.tellp() == 0 && k < forces.size(); ++k)
-        if (!forces[k].allFinite())
+    for (std::size_t k = 0; problem.tellp() == 0 && k < n; ++k)
+        if (!forces.col(k).allFinite())
             problem << "setFluidForces: fluid force on particle " << lastTags_[k] << " is ("
-                    << forces[k].transpose() << ") N, expected finite values";
+                    << forces.col(k).transpose() << ") N, expected finite values";
 
     // Still in the remembered order? (Nothing ran since getParticles, unless a
     // command deleted or created atoms.) Otherwise match by tag.
@@ -192,12 +198,12 @@ void LiggghtsDriver::setFluidForces(const std::vector<Vec3>& forces) {
     // unchanged since nothing moved). A full setup recomputes f anyway, and
     // before the first run f holds nothing yet.
     double** f = atom.f;
-    for (std::size_t k = 0; k < forces.size(); ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
         const int i = index[k];
         double* stored = forces_->force(i);
         for (int d = 0; d < 3; ++d) {
-            if (!needsSetup_) f[i][d] += forces[k][d] - stored[d];
-            stored[d] = forces[k][d];
+            if (!needsSetup_) f[i][d] += forces(d, k) - stored[d];
+            stored[d] = forces(d, k);
         }
     }
 }

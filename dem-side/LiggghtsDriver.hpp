@@ -68,6 +68,8 @@ public:
     // InputError if the size is wrong, a force is not finite, or a particle
     // of that list is no longer on this rank. Collective (the check).
     void setFluidForces(const std::vector<Vec3>& forces);
+    // The same with the forces as n x 3 contiguous doubles (x y z per particle).
+    void setFluidForces(const double* xyz, std::size_t n);
 
     // Advances the DEM by nSteps steps: a full LIGGGHTS setup (`run N`) the
     // first time and after any command(), `run N pre no post no` otherwise.

@@ -8,6 +8,12 @@
 
 namespace granair {
 
+// Parcel volume [m3] from its radius.
+static double volume(const OwnedParticle& p) {
+    const double r = p.state.radius;
+    return 4.0 / 3.0 * M_PI * r * r * r;
+}
+
 CouplingStep::CouplingStep(const CouplingSettings& settings, const CellLocator& mesh, FluidProperties fluid)
     : settings_(settings), mesh_(mesh), fluid_(fluid) {
     if (!settings_.drag || !settings_.voidFraction)
@@ -24,17 +30,13 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
     offset_.assign(1, 0);
     offset_.reserve(np + 1);
     weights_.clear();
-    volume_.resize(np);
-    velocity_.resize(np);
     solid_.assign(nCells, 0.0);
     for (std::size_t p = 0; p < np; ++p) {
         const OwnedParticle& op = owned[p];
-        const double r = op.state.radius;
-        volume_[p] = 4.0 / 3.0 * M_PI * r * r * r;
-        velocity_[p] = op.state.v;
+        const double vp = volume(op);
         settings_.voidFraction->stencil(mesh_, op.state, op.cell, scratch_);
         for (const CellWeight& cw : scratch_) {
-            solid_[cw.cell] += cw.weight * volume_[p];
+            solid_[cw.cell] += cw.weight * vp;
             weights_.push_back(cw);
         }
         offset_.push_back(static_cast<std::int64_t>(weights_.size()));
@@ -69,7 +71,7 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
         double b = 0.0;
         if (settings_.dragForce) {
             try {
-                b = parcelBeta(*settings_.drag, dParcel, s, epsP, (uf - velocity_[p]).norm(), fluid_);
+                b = parcelBeta(*settings_.drag, dParcel, s, epsP, (uf - owned[p].state.v).norm(), fluid_);
             } catch (const InputError& e) {
                 fail<InputError>("particle ", owned[p].state.id, " at (", owned[p].state.x.transpose(),
                                  "): ", e.what());
@@ -80,7 +82,7 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
             const CellWeight& cw = weights_[k];
             const double wb = cw.weight * b;
             sumBeta_[cw.cell] += wb;
-            for (int a = 0; a < 3; ++a) Us[3 * cw.cell + a] += wb * velocity_[p][a];
+            for (int a = 0; a < 3; ++a) Us[3 * cw.cell + a] += wb * owned[p].state.v[a];
         }
     }
     for (int c = 0; c < nCells; ++c) {
@@ -90,11 +92,15 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
     }
 }
 
-void CouplingStep::cellsToParticles(const double* Ucell, const double* gradPcell,
-                                    std::vector<double>& forces) const {
+void CouplingStep::cellsToParticles(const std::vector<OwnedParticle>& owned, const double* Ucell,
+                                    const double* gradPcell, std::vector<double>& forces,
+                                    std::vector<double>* drag) const {
     const std::size_t np = beta_.size();
+    if (owned.size() != np)
+        fail("CouplingStep::cellsToParticles: ", owned.size(), " particles given, ", np,
+             " in the last particlesToCells");
     forces.assign(3 * np, 0.0);
-    drag_.assign(3 * np, 0.0);
+    if (drag) drag->assign(3 * np, 0.0);
     const Vec3 buoyancyPerVolume = -fluid_.rho * settings_.gravity;
     for (std::size_t p = 0; p < np; ++p) {
         Vec3 uf = Vec3::Zero(), gp = Vec3::Zero();
@@ -104,13 +110,14 @@ void CouplingStep::cellsToParticles(const double* Ucell, const double* gradPcell
             uf += cw.weight * Vec3(Ucell[3 * c], Ucell[3 * c + 1], Ucell[3 * c + 2]);
             gp += cw.weight * Vec3(gradPcell[3 * c], gradPcell[3 * c + 1], gradPcell[3 * c + 2]);
         }
-        const Vec3 drag = beta_[p] * (uf - velocity_[p]);
-        Vec3 f = drag;
-        if (settings_.pressureGradientForce) f -= volume_[p] * gp;
-        if (settings_.buoyancyForce) f += volume_[p] * buoyancyPerVolume;
+        const double vp = volume(owned[p]);
+        const Vec3 fd = beta_[p] * (uf - owned[p].state.v);
+        Vec3 f = fd;
+        if (settings_.pressureGradientForce) f -= vp * gp;
+        if (settings_.buoyancyForce) f += vp * buoyancyPerVolume;
         for (int a = 0; a < 3; ++a) {
             forces[3 * p + a] = f[a];
-            drag_[3 * p + a] = drag[a];
+            if (drag) (*drag)[3 * p + a] = fd[a];
         }
     }
 }
@@ -123,8 +130,7 @@ std::size_t capacityBytes(const std::vector<T>& v) {
 }  // namespace
 
 std::size_t CouplingStep::particleBufferBytes() const {
-    return capacityBytes(offset_) + capacityBytes(weights_) + capacityBytes(beta_) + capacityBytes(volume_) +
-           capacityBytes(velocity_) + capacityBytes(drag_) + capacityBytes(scratch_);
+    return capacityBytes(offset_) + capacityBytes(weights_) + capacityBytes(beta_) + capacityBytes(scratch_);
 }
 
 std::size_t CouplingStep::cellBufferBytes() const { return capacityBytes(solid_) + capacityBytes(sumBeta_); }

@@ -46,12 +46,13 @@ public:
     void particlesToCells(const std::vector<OwnedParticle>& owned, const double* Ucell,
                           double* eps, double* K, double* Us);
 
-    // Step 3. Ucell, gradPcell: new air velocity and pressure gradient [Pa/m]
-    // per cell. Writes 3 doubles per owned particle (same order) into forces.
-    void cellsToParticles(const double* Ucell, const double* gradPcell, std::vector<double>& forces) const;
-
-    // Per-particle drag part only of the last cellsToParticles (3 per particle), for tests/output.
-    const std::vector<double>& dragForces() const { return drag_; }
+    // Step 3. `owned` as given to particlesToCells; Ucell, gradPcell: new air
+    // velocity and pressure gradient [Pa/m] per cell. Writes 3 doubles per
+    // owned particle (same order) into forces, and the drag part alone into
+    // *drag when given (tests, output).
+    void cellsToParticles(const std::vector<OwnedParticle>& owned, const double* Ucell,
+                          const double* gradPcell, std::vector<double>& forces,
+                          std::vector<double>* drag = nullptr) const;
 
     const CouplingStepStats& stats() const { return stats_; }
 
@@ -68,11 +69,8 @@ private:
     std::vector<std::int64_t> offset_;
     std::vector<CellWeight> weights_;
     std::vector<double> beta_;     // per particle [kg/s]
-    std::vector<double> volume_;   // per particle [m3]
-    std::vector<Vec3> velocity_;   // per particle [m/s]
     std::vector<double> solid_;    // per cell, workspace
     std::vector<double> sumBeta_;  // per cell, workspace
-    mutable std::vector<double> drag_;
     std::vector<CellWeight> scratch_;
     CouplingStepStats stats_;
 };

@@ -149,10 +149,16 @@ std::string ParticleVtkWriter::pieceName(int output, int rank) {
 
 void ParticleVtkWriter::write(double time, const std::vector<ParticleState>& particles,
                               const std::vector<Vec3>& fluidForces) {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three contiguous doubles");
+    write(time, particles, fluidForces.empty() ? nullptr : fluidForces.front().data(), fluidForces.size());
+}
+
+void ParticleVtkWriter::write(double time, const std::vector<ParticleState>& particles,
+                              const double* fluidForces, std::size_t nForces) {
     std::ostringstream bad;
     bad.precision(17);
-    if (fluidForces.size() != particles.size())
-        bad << "particle output: " << fluidForces.size() << " fluid forces for " << particles.size()
+    if (fluidForces && nForces != particles.size())
+        bad << "particle output: " << nForces << " fluid forces for " << particles.size()
             << " particles; expected one force per particle";
     else if (!std::isfinite(time) || (!times_.empty() && !(time > times_.back())))
         bad << "particle output: time " << time << " s; expected a finite time after the last output ("
@@ -169,7 +175,7 @@ void ParticleVtkWriter::write(double time, const std::vector<ParticleState>& par
 }
 
 std::string ParticleVtkWriter::writePiece(int output, const std::vector<ParticleState>& particles,
-                                          const std::vector<Vec3>& fluidForces) const {
+                                          const double* fluidForces) const {
     // Every rank makes the folder of this output (whoever comes first wins),
     // so no rank waits for rank 0 to create it.
     const std::string folder = directory_ + "/particles_" + std::to_string(output);
@@ -207,7 +213,9 @@ std::string ParticleVtkWriter::writePiece(int output, const std::vector<Particle
          streamArray<std::int64_t>(f, n, 1, [&](std::size_t i, std::int64_t* o) { *o = particles[i].id; });
     ok = ok && streamArray<double>(f, n, 1, [&](std::size_t i, double* o) { *o = particles[i].radius; });
     ok = ok && streamArray<double>(f, n, 3, [&](std::size_t i, double* o) { put3(particles[i].v, o); });
-    ok = ok && streamArray<double>(f, n, 3, [&](std::size_t i, double* o) { put3(fluidForces[i], o); });
+    ok = ok && streamArray<double>(f, n, 3, [&](std::size_t i, double* o) {
+             for (int d = 0; d < 3; ++d) o[d] = fluidForces ? fluidForces[3 * i + d] : 0.0;
+         });
     ok = ok && streamArray<double>(f, n, 3, [&](std::size_t i, double* o) { put3(particles[i].x, o); });
     ok = ok &&
          streamArray<std::int64_t>(f, n, 1, [](std::size_t i, std::int64_t* o) { *o = std::int64_t(i); });

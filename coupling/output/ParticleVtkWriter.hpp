@@ -49,6 +49,10 @@ public:
     // than the last output's; and, naming the file, if one cannot be written.
     void write(double time, const std::vector<ParticleState>& particles,
                const std::vector<Vec3>& fluidForces);
+    // The same with the forces as nForces x 3 contiguous doubles; nullptr
+    // writes zero forces (no fluid force yet, or the air off).
+    void write(double time, const std::vector<ParticleState>& particles, const double* fluidForces,
+               std::size_t nForces);
 
     int outputs() const { return static_cast<int>(times_.size()); }
     const std::string& directory() const { return directory_; }
@@ -60,7 +64,7 @@ public:
 
 private:
     std::string writePiece(int output, const std::vector<ParticleState>& particles,
-                           const std::vector<Vec3>& fluidForces) const;
+                           const double* fluidForces) const;
     std::string writeIndex(int output) const;
     std::string writeCollection() const;
 
