@@ -63,6 +63,7 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
             settings_, *locator_, ::granair::FluidProperties{air_->rho(), air_->mu()}
         );
         monitors_ = std::make_unique<MonitorSet>(mesh_, dict_);
+        mapInitialVoidFraction();
     }
 
     // Time series.
@@ -132,6 +133,31 @@ void CoupledRun::checkTimeSteps()
             "number of deltaT (", dtCfd, " s)"
         );
     }
+}
+
+
+void CoupledRun::mapInitialVoidFraction()
+{
+    // The void fraction at the start time from the particles as the DEM
+    // script left them (a filled or settled bed). It becomes the old-time
+    // level of the first step; without it that step's d(eps)/dt would be
+    // (eps(particles) - eps(0/voidfraction))/dt: a bed present at the start
+    // would appear within one step, and the air it displaces would make a
+    // pressure spike that kicks the bed (a settled 9 mm bed was thrown up by
+    // 0.7 mm). K and Us are set too, and recomputed at the first step.
+    dem_->getParticles(particles_);
+    exchange_->forward(particles_, owned_);
+    const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
+    step_->particlesToCells
+    (
+        owned_, U,
+        air_->voidfraction().primitiveFieldRef().data(),
+        air_->Ksl().primitiveFieldRef().data(),
+        reinterpret_cast<double*>(air_->Us().primitiveFieldRef().data())
+    );
+    air_->voidfraction().correctBoundaryConditions();
+    air_->Ksl().correctBoundaryConditions();
+    air_->Us().correctBoundaryConditions();
 }
 
 
