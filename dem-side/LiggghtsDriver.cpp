@@ -13,6 +13,7 @@
 #include "atom.h"
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
+#include "domain.h"
 #include "lammps.h"
 #include "library.h"
 #include "universe.h"
@@ -228,10 +229,18 @@ void LiggghtsDriver::getParticles(std::vector<ParticleState>& out) {
     const int nlocal = atom.nlocal;
     out.resize(nlocal);
     lastTags_.resize(nlocal);
+    // In a periodic box LIGGGHTS wraps a particle that crossed a periodic
+    // face only at the next re-neighbouring, so in between its centre may lie
+    // up to half the skin outside the box (and outside the CFD mesh, which
+    // covers the box). Report the wrapped position, as LIGGGHTS will hold it.
+    LAMMPS_NS::Domain& domain = *lmp_->domain;
+    const bool periodic = domain.xperiodic || domain.yperiodic || domain.zperiodic;
     for (int i = 0; i < nlocal; ++i) {
         ParticleState& p = out[i];
         p.id = atom.tag[i];
-        p.x = Vec3(atom.x[i][0], atom.x[i][1], atom.x[i][2]);
+        double x[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
+        if (periodic) domain.remap(x);
+        p.x = Vec3(x[0], x[1], x[2]);
         p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
         p.radius = atom.radius[i];
         lastTags_[i] = atom.tag[i];

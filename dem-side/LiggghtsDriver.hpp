@@ -77,7 +77,8 @@ public:
     void advance(int nSteps);
 
     // Local particles (id = LIGGGHTS tag, x, v, radius) in LIGGGHTS' local
-    // order; remembered for setFluidForces.
+    // order; remembered for setFluidForces. In a periodic box x is wrapped
+    // into the box (LIGGGHTS itself wraps only when it re-neighbours).
     void getParticles(std::vector<ParticleState>& out);
     // Mass [kg] of each local particle, same order as getParticles (valid
     // until the next command or advance).
