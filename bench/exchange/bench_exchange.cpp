@@ -125,9 +125,21 @@ int main(int argc, char** argv) {
     int rank = 0, size = 1;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
+    // Every rank parses the same argv, so a bad argument stops all ranks alike.
+    const auto usage = [&](const char* why) {
+        if (rank == 0)
+            std::fprintf(stderr, "bench_exchange: %s\nusage: bench_exchange [steps>=1, default 20] "
+                                 "[N>=1 ... particles, default 10000 100000]\n", why);
+        MPI_Finalize();
+        return 2;
+    };
     const int steps = argc > 1 ? std::atoi(argv[1]) : 20;
+    if (steps < 1) return usage("the number of steps must be a positive integer");
     std::vector<long> sizes;
-    for (int i = 2; i < argc; ++i) sizes.push_back(std::atol(argv[i]));
+    for (int i = 2; i < argc; ++i) {
+        sizes.push_back(std::atol(argv[i]));
+        if (sizes.back() < 1) return usage("particle counts must be positive integers");
+    }
     if (sizes.empty()) sizes = {10000, 100000};
     if (rank == 0) {
         std::printf("# mesh 40^3 cells, CFD slabs along z; DEM slabs along x (differ) or z (match)\n");
