@@ -49,23 +49,28 @@ PACKING_INSERT = 0.33    # random sequential addition target of the loose packin
 
 # ---------------------------------------------------------------------------
 # Sizes. A size fixes the reductions per orifice width b [mm]:
-#   d_over_b  parcels per orifice width b / d_parcel (sets the coarse-graining
-#             factor s = b / (d_over_b * mean primary d))
-#   fill      settled fill height above the orifice [m]
-# and, for all b: the discharge time, Young's modulus, slice thickness in
-# parcel diameters, time step as a fraction of the Rayleigh time.
+#   b_over_d  orifice width in mean parcel diameters (sets the coarse-graining
+#             factor s = b / (b_over_d * mean primary d))
+#   fill      settled fill height above the orifice [m], enough for the
+#             discharge time at the measured DEM-only rates
+# and, for all b: the discharge time [s], Young's modulus [Pa], the slice
+# thickness in mean parcel diameters, the DEM time step as a fraction of the
+# Rayleigh time of the smallest parcel, the CFD (coupling) time step [s].
+# demo: all six runs in about 10 min on 2 idle cores (README): the b = 5 mm
+# runs cost most (smallest parcels), hence b_over_d 5.5 there, E = 2e6 Pa and
+# a slice three parcels thick (four in the study).
 # ---------------------------------------------------------------------------
 SIZES = {
     "demo": dict(
-        t_end=1.0, youngs=2e6, slice_parcels=4.0, rayleigh_fraction=0.2, cfd_dt=5e-4,
-        per_b={5: dict(b_over_d=5.5, fill=0.100),
+        t_end=1.0, youngs=2e6, slice_parcels=3.0, rayleigh_fraction=0.2, cfd_dt=5e-4,
+        per_b={5: dict(b_over_d=5.5, fill=0.090),
                10: dict(b_over_d=6.0, fill=0.160),
                15: dict(b_over_d=6.0, fill=0.225)}),
     "study": dict(
         t_end=2.0, youngs=5e6, slice_parcels=4.0, rayleigh_fraction=0.2, cfd_dt=5e-4,
-        per_b={5: dict(b_over_d=8.0, fill=0.150),
-               10: dict(b_over_d=8.0, fill=0.260),
-               15: dict(b_over_d=8.0, fill=0.250)}),
+        per_b={5: dict(b_over_d=7.0, fill=0.150),
+               10: dict(b_over_d=7.0, fill=0.260),
+               15: dict(b_over_d=7.0, fill=0.250)}),
 }
 
 

@@ -238,40 +238,43 @@ def fields_of_run(run_dir, case):
 
 
 def plot_fields(fields, case, title, path):
+    """One row per field (void fraction; air pressure with air), one panel per time,
+    cropped to the fill height plus 30 mm; one colour bar per row."""
     times = sorted(fields)
     has_p = any(f["p"] is not None for f in fields.values())
     rows = 2 if has_p else 1
-    fig, axes = plt.subplots(rows, len(times), figsize=(2.6 * len(times) + 1.2, 4.6 * rows),
-                             squeeze=False)
+    ztop = min(case.hopper_height + mc.SHAFT_HEIGHT, case.fill_height + 0.03) * 1e3
+    zbot = -mc.BOX_BELOW * 1e3
+    aspect = (ztop - zbot) / (mc.WIDTH * 1e3)
+    fig, axes = plt.subplots(rows, len(times), squeeze=False,
+                             figsize=(1.9 * len(times) + 1.4, 1.9 * aspect * rows + 0.8))
     polys = [[(x * 1e3, z * 1e3) for (x, z) in poly] for poly in case.cell_polygons()]
     plim = max([float(np.max(np.abs(f["p"]))) for f in fields.values() if f["p"] is not None] + [1e-6])
     for j, t in enumerate(times):
         f = fields[t]
-        ax = axes[0][j]
-        pc = PolyCollection(polys, array=f["voidfraction"], cmap="viridis", edgecolors="none")
-        pc.set_clim(0.35, 1.0)
-        ax.add_collection(pc)
-        ax.set_title(f"void fraction, t = {t:g} s", fontsize=9)
-        if j == len(times) - 1:
-            fig.colorbar(pc, ax=ax, fraction=0.08)
+        pc0 = PolyCollection(polys, array=f["voidfraction"], cmap="viridis", edgecolors="face",
+                             linewidths=0.2)
+        pc0.set_clim(0.35, 1.0)
+        axes[0][j].add_collection(pc0)
+        axes[0][j].set_title(f"t = {t:g} s", fontsize=9)
         if has_p:
-            ax = axes[1][j]
             vals = f["p"] if f["p"] is not None else np.zeros(case.n_cells())
-            pc = PolyCollection(polys, array=vals, cmap="RdBu_r", edgecolors="none")
-            pc.set_clim(-plim, plim)
-            ax.add_collection(pc)
-            ax.set_title(f"air pressure [Pa], t = {t:g} s", fontsize=9)
-            if j == len(times) - 1:
-                fig.colorbar(pc, ax=ax, fraction=0.08)
+            pc1 = PolyCollection(polys, array=vals, cmap="RdBu_r", edgecolors="face", linewidths=0.2)
+            pc1.set_clim(-plim, plim)
+            axes[1][j].add_collection(pc1)
+            axes[1][j].set_title(f"t = {t:g} s", fontsize=9)
+    fig.colorbar(pc0, ax=list(axes[0]), fraction=0.04, pad=0.02, label="void fraction")
+    if has_p:
+        fig.colorbar(pc1, ax=list(axes[1]), fraction=0.04, pad=0.02, label="air pressure - ambient [Pa]")
     for ax in axes.flat:
         ax.set_xlim(-mc.WIDTH / 2 * 1e3, mc.WIDTH / 2 * 1e3)
-        ax.set_ylim(-mc.BOX_BELOW * 1e3, (case.hopper_height + mc.SHAFT_HEIGHT) * 1e3)
+        ax.set_ylim(zbot, ztop)
         ax.set_aspect("equal")
         ax.set_xlabel("x [mm]", fontsize=8)
         ax.tick_params(labelsize=7)
-    axes[0][0].set_ylabel("z [mm]", fontsize=8)
+    for row in axes:
+        row[0].set_ylabel("z [mm]", fontsize=8)
     fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
 

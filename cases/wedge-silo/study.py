@@ -55,6 +55,10 @@ def sh(cmd, cwd, log):
 def mpi(np_, cmd, parallel_flag):
     if np_ <= 1:
         return cmd
+    # A waiting rank yields its core instead of spinning: on a shared machine
+    # a spinning rank takes the CPU its partner needs (LIGGGHTS synchronises
+    # every step); on an idle machine yielding costs next to nothing.
+    os.environ.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")
     return ["mpirun", "-np", str(np_)] + cmd + (["-parallel"] if parallel_flag else [])
 
 
@@ -120,12 +124,13 @@ def study_plots(summaries, fills, series, out, size):
     bs = sorted({s["b_mm"] for s in summaries})
 
     # Mass flow vs time with the Beverloo band and the Crewdson estimate.
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = plt.subplots(figsize=(11.5, 5.5))
     for b in bs:
         c = colours.get(b, "k")
         fs = fills[b]
         lo, hi = fs["beverloo_kg_s"][1], fs["beverloo_kg_s"][0]
-        ax.axhspan(lo, hi, color=c, alpha=0.15, lw=0)
+        ax.axhspan(lo, hi, color=c, alpha=0.15, lw=0,
+                   label=f"b = {b} mm, Hagen-Beverloo, k = 1..3")
         for s in summaries:
             if s["b_mm"] != b:
                 continue
@@ -143,7 +148,7 @@ def study_plots(summaries, fills, series, out, size):
     ax.set_title(f"Wedge silo ({size}): mass flow; shaded: Hagen-Beverloo slot band "
                  f"(C = {post.BEVERLOO_C}, k = 1..3)", fontsize=9)
     ax.set_ylim(bottom=0)
-    ax.legend(fontsize=7, ncol=2, loc="upper right")
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "mass_flow.png"), dpi=120)
@@ -196,7 +201,9 @@ def main():
     ap.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
     ap.add_argument("--fill-height", type=float, default=None)
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--skip-runs", action="store_true", help="post-process existing runs only")
+    ap.add_argument("--stage", default="all", choices=["all", "fill", "runs", "post"],
+                    help="all (default); fill: the fills only; runs: the runs from existing fills, "
+                         "then post-processing; post: post-process existing runs")
     ap.add_argument("--check", action="store_true")
     a = ap.parse_args()
     out = os.path.abspath(a.out)
@@ -206,15 +213,27 @@ def main():
     os.makedirs(res, exist_ok=True)
     t_start = time.time()
     timings = []
-    if not a.skip_runs:
-        print(f"wedge-silo: size {a.size}, b = {a.b} mm, runs {a.runs}, {a.jobs} job(s) of "
-              f"{a.np} rank(s); work in {work}", flush=True)
+    print(f"wedge-silo: size {a.size}, b = {a.b} mm, runs {a.runs}, stage {a.stage}, {a.jobs} job(s) "
+          f"of {a.np} rank(s); work in {work}", flush=True)
+    timing_file = os.path.join(res, "timings.json")
+    if a.stage in ("all", "fill"):
         timings += pool(a.jobs, [(do_fill, (a, b, work)) for b in a.b])
         print(f"wedge-silo: fills done after {time.time() - t_start:.0f} s", flush=True)
+    if a.stage in ("all", "runs"):
+        # small b first: its parcels are the smallest and its runs the longest
         tasks = [(do_run, (a, b, r == "air", work)) for b in a.b for r in a.runs]
-        # longest first (small b: smallest parcels) keeps both job slots busy
         timings += pool(a.jobs, tasks)
         print(f"wedge-silo: runs done after {time.time() - t_start:.0f} s", flush=True)
+    # stage times accumulate over invocations (e.g. --stage fill, then --stage runs)
+    old = []
+    if os.path.exists(timing_file):
+        with open(timing_file) as fh:
+            old = [t for t in json.load(fh) if t["stage"] not in {x["stage"] for x in timings}]
+    timings = old + timings
+    with open(timing_file, "w") as fh:
+        json.dump(timings, fh, indent=1)
+    if a.stage == "fill":
+        return
 
     # Post-processing.
     import numpy as np
@@ -305,12 +324,26 @@ def write_summary(summaries, fills, timings, res, wall, a):
         for tm in sorted(timings, key=lambda x: x["stage"]):
             lines.append(f"  {tm['stage']:14s} wall {tm['run_s']:8.0f}   cpu {tm['run_cpu_s']:8.0f}")
         lines.append(f"  total CPU {sum(tm['run_cpu_s'] for tm in timings):.0f} s")
+        fills_cpu = [tm["run_cpu_s"] for tm in timings if tm["stage"].endswith("_fill")]
+        runs_cpu = [tm["run_cpu_s"] for tm in timings if not tm["stage"].endswith("_fill")]
+        idle = makespan(fills_cpu, a.jobs) + makespan(runs_cpu, a.jobs)
+        lines.append(f"  idle-machine estimate with {a.jobs} job(s): {idle:.0f} s of runs (each job a "
+                     f"full core for its CPU time), plus packing and post-processing")
     lines.append("")
     lines.append("Expectations (reported, not asserted):")
     for line in expectations(summaries, fills):
         lines.append("  " + line)
     with open(os.path.join(res, "summary.txt"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
+
+
+def makespan(durations, jobs):
+    """Wall time of tasks started in order on `jobs` slots (as the pool runs them)."""
+    slots = [0.0] * max(1, jobs)
+    for d in durations:
+        i = slots.index(min(slots))
+        slots[i] += d
+    return max(slots) if durations else 0.0
 
 
 def expectations(summaries, fills):
