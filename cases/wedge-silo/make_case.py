@@ -57,17 +57,21 @@ PACKING_INSERT = 0.33    # random sequential addition target of the loose packin
 # thickness in mean parcel diameters, the DEM time step as a fraction of the
 # Rayleigh time of the smallest parcel, the CFD (coupling) time step [s].
 # demo: all six runs in about 10 min on 2 idle cores (README): the b = 5 mm
-# runs cost most (smallest parcels), hence b_over_d 5.5 there, E = 2e6 Pa and
-# a slice three parcels thick (four in the study).
+# runs cost most (smallest parcels), hence b_over_d 5.5 there, E = 2e6 Pa, a
+# slice three parcels thick (four in the study) and 0.5 s of discharge (the
+# rates are steady after about 0.2 s; the study runs 2 s). write_interval:
+# the times of the field pictures and VTK files [s].
 # ---------------------------------------------------------------------------
 SIZES = {
     "demo": dict(
-        t_end=1.0, youngs=2e6, slice_parcels=3.0, rayleigh_fraction=0.2, cfd_dt=5e-4,
-        per_b={5: dict(b_over_d=5.5, fill=0.090),
-               10: dict(b_over_d=6.0, fill=0.160),
-               15: dict(b_over_d=6.0, fill=0.225)}),
+        t_end=0.5, write_interval=0.25, youngs=2e6, slice_parcels=3.0, rayleigh_fraction=0.2,
+        cfd_dt=5e-4,
+        per_b={5: dict(b_over_d=5.5, fill=0.085),
+               10: dict(b_over_d=6.0, fill=0.135),
+               15: dict(b_over_d=6.0, fill=0.190)}),
     "study": dict(
-        t_end=2.0, youngs=5e6, slice_parcels=4.0, rayleigh_fraction=0.2, cfd_dt=5e-4,
+        t_end=2.0, write_interval=1.0, youngs=5e6, slice_parcels=4.0, rayleigh_fraction=0.2,
+        cfd_dt=5e-4,
         per_b={5: dict(b_over_d=7.0, fill=0.150),
                10: dict(b_over_d=7.0, fill=0.260),
                15: dict(b_over_d=7.0, fill=0.250)}),
@@ -97,7 +101,7 @@ def draw_primary_diameter(rng):
 class Case:
     """All numbers of one run (or fill) of the wedge silo."""
 
-    def __init__(self, size, b_mm, air=True, s=None, t_end=None, write_interval=1.0,
+    def __init__(self, size, b_mm, air=True, s=None, t_end=None, write_interval=None,
                  youngs=None, cohesion="matched", np=2, seed=1, fill=None,
                  slice_parcels=None):
         if size not in SIZES:
@@ -126,7 +130,7 @@ class Case:
         self.depth_scale = DEPTH / self.slice
         self.fill_height = fill if fill is not None else pb["fill"]
         self.t_end = t_end if t_end is not None else cfg["t_end"]
-        self.write_interval = write_interval
+        self.write_interval = write_interval if write_interval is not None else cfg["write_interval"]
         # stiffness: E reduced, cohesion energy density scaled so the cohesive
         # force at a given contact load stays that of the real material
         # (SJKR force = k_coh * contact area, and the area at a given load
@@ -836,7 +840,7 @@ def add_case_args(p):
     p.add_argument("--b", type=int, default=10, help="orifice width [mm]: 5, 10 or 15")
     p.add_argument("--s", type=float, default=None, help="coarse-graining factor (default: from size)")
     p.add_argument("--t-end", type=float, default=None, help="discharge time [s]")
-    p.add_argument("--write-interval", type=float, default=1.0, help="field output interval [s]")
+    p.add_argument("--write-interval", type=float, default=None, help="field output interval [s] (default: the size's)")
     p.add_argument("--youngs", type=float, default=None, help="Young's modulus used [Pa]")
     p.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
     p.add_argument("--fill-height", type=float, default=None, help="settled fill height [m]")

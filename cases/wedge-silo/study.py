@@ -105,13 +105,17 @@ def do_run(a, b, air, work):
                 post_s=time.time() - t2)
 
 
-def pool(jobs, tasks):
-    """Run tasks [(fn, args)] with at most `jobs` at a time; re-raise the first failure."""
+def pool(jobs, tasks, t_start):
+    """Run tasks [(fn, args)] with at most `jobs` at a time; re-raise the first failure.
+    Prints one line per finished task (runs take minutes each: the user sees it move)."""
     results = []
     with cf.ThreadPoolExecutor(max_workers=jobs) as ex:
         futs = [ex.submit(fn, *args) for fn, args in tasks]
-        for f in cf.as_completed(futs):
-            results.append(f.result())
+        for done, f in enumerate(cf.as_completed(futs), 1):
+            r = f.result()
+            results.append(r)
+            print(f"wedge-silo: [{done}/{len(futs)}] {r['stage']} done: {r['run_s']:.0f} s wall, "
+                  f"{r['run_cpu_s']:.0f} s CPU ({time.time() - t_start:.0f} s since start)", flush=True)
     return results
 
 
@@ -196,7 +200,8 @@ def main():
     ap.add_argument("--fill-np", type=int, default=1, help="MPI ranks per fill (plain LIGGGHTS)")
     ap.add_argument("--s", type=float, default=None, help="coarse-graining factor for every b")
     ap.add_argument("--t-end", type=float, default=None, help="discharge time [s]")
-    ap.add_argument("--write-interval", type=float, default=1.0, help="field interval [s]")
+    ap.add_argument("--write-interval", type=float, default=None,
+                    help="field interval [s] (default: the size's, demo 0.25, study 1)")
     ap.add_argument("--youngs", type=float, default=None)
     ap.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
     ap.add_argument("--fill-height", type=float, default=None)
@@ -217,12 +222,14 @@ def main():
           f"of {a.np} rank(s); work in {work}", flush=True)
     timing_file = os.path.join(res, "timings.json")
     if a.stage in ("all", "fill"):
-        timings += pool(a.jobs, [(do_fill, (a, b, work)) for b in a.b])
+        timings += pool(a.jobs, [(do_fill, (a, b, work)) for b in a.b], t_start)
         print(f"wedge-silo: fills done after {time.time() - t_start:.0f} s", flush=True)
     if a.stage in ("all", "runs"):
+        print(f"wedge-silo: discharge runs started; each prints its progress (simulated time, ETA) "
+              f"to {work}/b<b>/<air|noair>/log/granairFoam.log", flush=True)
         # small b first: its parcels are the smallest and its runs the longest
         tasks = [(do_run, (a, b, r == "air", work)) for b in a.b for r in a.runs]
-        timings += pool(a.jobs, tasks)
+        timings += pool(a.jobs, tasks, t_start)
         print(f"wedge-silo: runs done after {time.time() - t_start:.0f} s", flush=True)
     # stage times accumulate over invocations (e.g. --stage fill, then --stage runs)
     old = []
@@ -276,6 +283,12 @@ def main():
         sys.exit(1)
     if a.check:
         print("wedge-silo: checks passed")
+    print(f"wedge-silo: results in {res}\n"
+          f"  mass_flow.png, outlet_pressure_gradient.png   the study plots\n"
+          f"  summary.txt (.csv, .json)                     rates, gradients, Beverloo band, balance, times\n"
+          f"  b<b>_<air|noair>.csv                          time series (t, mass_flow_kg_s, outlet_dpdz_Pa_m, ...)\n"
+          f"  b<b>_<air|noair>_fields.png, vtk/             void fraction and air pressure fields\n"
+          f"  the OpenFOAM cases (open in ParaView):        {work}/b<b>/air", flush=True)
 
 
 def write_summary(summaries, fills, timings, res, wall, a):
