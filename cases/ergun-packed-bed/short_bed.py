@@ -17,6 +17,12 @@ Reported, not asserted: the largest |U - U_s| / U_s in the particle-free
 cells (plenum and freeboard, including the two next to the bed), and the
 cumulative continuity error.
 
+With --on-inlet the bed rests directly on the inlet patch (no plenum: a
+distributor that is the domain boundary, fixed U and zero-gradient p there),
+with voidfraction fixedValue 1 on the inlet so the inflow is still U_s A.
+The total pressure drop is then the inlet patch monitor's mean face pressure
+minus the freeboard mean; the same two assertions and tolerances apply.
+
 Writes <out>/short_bed.csv and <out>/short_bed.png (pressure profiles).
 With --check, exits 1 unless every point meets both tolerances.
 """
@@ -57,10 +63,12 @@ def foam_header(cls, obj):
     return (f"FoamFile {{ version 2.0; format ascii; class {cls}; object {obj}; }}\n")
 
 
-def set_geometry(case, dz, n_bed, law, d):
+def set_geometry(case, dz, n_bed, law, d, plenum_cells=PLENUM_CELLS):
     """Overwrite the column, the bed region and the monitors of the copied
-    template: PLENUM_CELLS + n_bed + FREEBOARD_CELLS cells of height dz."""
-    n = PLENUM_CELLS + n_bed + FREEBOARD_CELLS
+    template: plenum_cells + n_bed + FREEBOARD_CELLS cells of height dz.
+    Without a plenum the bed rests on the inlet, whose void fraction is set
+    to 1 (the inflow stays U_s A) and which carries the 'plenum' monitor."""
+    n = plenum_cells + n_bed + FREEBOARD_CELLS
     h = n * dz
     write(os.path.join(case, "system", "blockMeshDict"), foam_header("dictionary", "blockMeshDict") + f"""
 convertToMeters 1;
@@ -74,7 +82,7 @@ boundary
     outlet {{ type patch; faces ( (4 5 6 7) ); }}
 );
 """)
-    z0, z1 = PLENUM_CELLS * dz, (PLENUM_CELLS + n_bed) * dz
+    z0, z1 = plenum_cells * dz, (plenum_cells + n_bed) * dz
     # boxToCell selects cells by their centre: a box a quarter cell inside
     # the bed's faces holds exactly the bed cells.
     write(os.path.join(case, "system", "setFieldsDict"), foam_header("dictionary", "setFieldsDict") + f"""
@@ -85,12 +93,23 @@ regions ( boxToCell {{ box (-1 -1 {z0 + 0.25*dz!r}) (1 1 {z1 - 0.25*dz!r});
     # Monitors on faces inside the plenum and the freeboard (granairAirFoam
     # needs at least one; the check reads the cell fields).
     zp, zf = 2 * dz, (n - 2) * dz
+    plenum_monitor = (f"plenum    {{ type plane; point (0 0 {zp!r}); normal (0 0 1); "
+                      f"boxMin (-1 -1 {zp - 0.1*dz!r}); boxMax (1 1 {zp + 0.1*dz!r}); }}")
+    if plenum_cells == 0:
+        plenum_monitor = "plenum    { type patch; patch inlet; normal (0 0 1); }"
+        vf = os.path.join(case, "0", "voidfraction")
+        with open(vf) as fh:
+            text = fh.read()
+        old = "inlet  { type zeroGradient; }"
+        if old not in text:
+            sys.exit(f"short_bed: cannot set the inlet void fraction in {vf}")
+        write(vf, text.replace(old, "inlet  { type fixedValue; value uniform 1; }"))
     write(os.path.join(case, "constant", "couplingProperties"), foam_header("dictionary", "couplingProperties") + f"""
 drag {{ type {law}; }}
 bed {{ diameter {d!r}; }}
 monitors
 {{
-    plenum    {{ type plane; point (0 0 {zp!r}); normal (0 0 1); boxMin (-1 -1 {zp - 0.1*dz!r}); boxMax (1 1 {zp + 0.1*dz!r}); }}
+    {plenum_monitor}
     freeboard {{ type plane; point (0 0 {zf!r}); normal (0 0 1); boxMin (-1 -1 {zf - 0.1*dz!r}); boxMax (1 1 {zf + 0.1*dz!r}); }}
 }}
 """)
@@ -126,6 +145,12 @@ def latest_time(case):
     return max(times)[1]
 
 
+def monitor_row(case):
+    """Last row of the granairAirFoam monitors (postProcessing/monitors.csv)."""
+    with open(os.path.join(case, "postProcessing", "monitors.csv")) as fh:
+        return list(csv.DictReader(fh))[-1]
+
+
 def continuity_error(case):
     with open(os.path.join(case, "log.granairAirFoam")) as fh:
         m = re.findall(r"air continuity error \(cumulative\)\s+(\S+)", fh.read())
@@ -139,9 +164,13 @@ def main():
     ap.add_argument("--diameters", nargs="+", type=float, default=DIAMETERS)
     ap.add_argument("--reynolds", nargs="+", type=float, default=REYNOLDS)
     ap.add_argument("--bed-cells", nargs="+", type=int, default=BED_CELLS)
+    ap.add_argument("--on-inlet", action="store_true",
+                    help="the bed rests on the inlet patch (no plenum): short_bed_on_inlet.csv/.png")
     args = ap.parse_args()
     out = os.path.abspath(args.out)
-    work = os.path.join(out, "runs-short")
+    plenum_cells = 0 if args.on_inlet else PLENUM_CELLS
+    tag = "short_bed_on_inlet" if args.on_inlet else "short_bed"
+    work = os.path.join(out, "runs-on-inlet" if args.on_inlet else "runs-short")
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
 
@@ -157,14 +186,14 @@ def main():
                 dz = cell_size(d)
                 u_s = re_p * study.MU / (study.RHO * d)
                 dt = 0.5 * dz / (u_s / eps)
-                name = f"short_d{d*1e6:.0f}um_N{n_bed}_Re{re_p:g}"
+                name = f"{'inlet' if args.on_inlet else 'short'}_d{d*1e6:.0f}um_N{n_bed}_Re{re_p:g}"
                 case = os.path.join(work, name)
                 study.fill_template(os.path.join(HERE, "template"), case, {
                     "BED_EPS": repr(eps), "END_TIME": repr(STEPS * dt), "DELTA_T": repr(dt),
                     "RHO": repr(study.RHO), "MU": repr(study.MU), "DRAG_LAW": "ErgunGidaspow",
                     "DIAMETER": repr(d), "U_SUPERFICIAL": repr(u_s),
                     "writeInterval 100000": f"writeInterval {STEPS}"})
-                n = set_geometry(case, dz, n_bed, "ErgunGidaspow", d)
+                n = set_geometry(case, dz, n_bed, "ErgunGidaspow", d, plenum_cells)
                 study.run(["blockMesh"], case, "log.blockMesh")
                 study.run(["setFields"], case, "log.setFields")
                 study.run(["granairAirFoam"], case, "log.granairAirFoam")
@@ -172,12 +201,16 @@ def main():
                 tdir = os.path.join(case, latest_time(case))
                 p = read_internal(os.path.join(tdir, "p"), n)
                 U = read_internal(os.path.join(tdir, "U"), n)
-                plenum = range(0, PLENUM_CELLS - AWAY)
-                freeboard = range(PLENUM_CELLS + n_bed + AWAY, n)
-                bed = range(PLENUM_CELLS, PLENUM_CELLS + n_bed)
+                plenum = range(0, plenum_cells - AWAY)
+                freeboard = range(plenum_cells + n_bed + AWAY, n)
+                bed = range(plenum_cells, plenum_cells + n_bed)
                 free = [i for i in range(n) if i not in bed]
-                dp = (sum(p[i] for i in plenum) / len(plenum)
-                      - sum(p[i] for i in freeboard) / len(freeboard))
+                if plenum_cells:
+                    p_below = sum(p[i] for i in plenum) / len(plenum)
+                else:
+                    # the inlet patch monitor: mean face pressure of the inlet
+                    p_below = float(monitor_row(case)["plenum_p_Pa"])
+                dp = p_below - sum(p[i] for i in freeboard) / len(freeboard)
                 ref = study.ergun(u_s, d) * n_bed * dz
                 u_bed = [U[i][2] / (u_s / eps) - 1 for i in bed]
                 worst_bed = max(u_bed, key=abs)
@@ -191,18 +224,18 @@ def main():
                                  U_edge_low_rel_err=u_bed[0], U_edge_high_rel_err=u_bed[-1],
                                  U_bed_worst_rel_err=worst_bed, free_max_dev_rel=dev_free,
                                  upwind_share=upwind / ref, cont_err=continuity_error(case)))
-                profiles[(d, n_bed, re_p)] = ([(i + 0.5) * dz for i in range(n)], p, dz, u_s)
+                profiles[(d, n_bed, re_p)] = ([(i + 0.5) * dz for i in range(n)], p, dz, u_s, plenum_cells)
                 print(f"[{k:2d}/{total}] {name:28s} dp={dp:11.4e} Pa Ergun*H={ref:11.4e}"
                       f" err={100*(dp-ref)/ref:+7.3f} %  U edge {100*u_bed[0]:+7.3f} % {100*u_bed[-1]:+7.3f} %"
                       f"  worst bed {100*worst_bed:+7.3f} %  free |U-Us| {100*dev_free:.1e} %", flush=True)
 
-    csv_path = os.path.join(out, "short_bed.csv")
+    csv_path = os.path.join(out, tag + ".csv")
     with open(csv_path, "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
-    plot(profiles, os.path.join(out, "short_bed.png"))
-    print(f"wrote {csv_path} and {os.path.join(out, 'short_bed.png')} ({time.time()-t0:.0f} s)")
+    plot(profiles, os.path.join(out, tag + ".png"))
+    print(f"wrote {csv_path} and {os.path.join(out, tag + '.png')} ({time.time()-t0:.0f} s)")
 
     worst_dp = max(rows, key=lambda r: abs(r["rel_err_dp"]))
     worst_u = max(rows, key=lambda r: abs(r["U_bed_worst_rel_err"]))
@@ -216,7 +249,7 @@ def main():
     print(f"continuity error (cumulative): max |.| = {max(abs(r['cont_err']) for r in rows):.2e} (reported)")
     if args.check and not (abs(worst_dp["rel_err_dp"]) <= TOLERANCE
                            and abs(worst_u["U_bed_worst_rel_err"]) <= TOLERANCE):
-        sys.exit("ergun-packed-bed (short bed): FAILED, the pressure drop or a bed-cell velocity "
+        sys.exit(f"ergun-packed-bed ({tag.replace('_', ' ')}): FAILED, the pressure drop or a bed-cell velocity "
                  "misses by more than 2 %")
 
 
@@ -237,9 +270,9 @@ def plot(profiles, path):
     fig, axes = plt.subplots(1, len(sel), figsize=(3.6 * len(sel), 4.2), squeeze=False)
     for ax, key in zip(axes[0], sel):
         d, n_bed, _ = key
-        z, p, dz, u_s = profiles[key]
+        z, p, dz, u_s, plenum_cells = profiles[key]
         g = study.ergun(u_s, d)
-        z0, z1 = PLENUM_CELLS * dz, (PLENUM_CELLS + n_bed) * dz
+        z0, z1 = plenum_cells * dz, (plenum_cells + n_bed) * dz
         pe = [g * (z1 - z0) - g * (min(max(zz, z0), z1) - z0) for zz in z]
         off = p[-1] - pe[-1]
         ax.plot([pp - off for pp in pe], [1e3 * zz for zz in z], "k-", label="exact (Ergun in the bed)")

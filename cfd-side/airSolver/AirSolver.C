@@ -318,6 +318,31 @@ void AirSolver::updateFacePressure
         if (!pB.coupled())
         {
             pfB[patchi] = pB;
+            if (U_.boundaryField()[patchi].fixesValue() && !pB.fixesValue())
+            {
+                // The flux is set by U here (an inlet, a distributor, a
+                // wall) and p is not fixed (zero-gradient): the face pressure is
+                // the one the cell's own half line needs to pass that
+                // flux, p_b = p_P + rho d (h_P.n + c - a_P u_b) (n out of
+                // the domain), as fixedFluxPressure would give. With p_P a
+                // bed resting on the patch would lose half its first cell
+                // of pressure gradient, and that cell half its velocity.
+                const labelUList& cells = mesh_.boundary()[patchi].faceCells();
+                const scalarField& epsB = voidfraction_.boundaryField()[patchi];
+                const scalarField& phiB = phi_.boundaryField()[patchi];
+                const scalarField& dcB = deltaCoeffs.boundaryField()[patchi];
+                const vectorField& SfB = Sf.boundaryField()[patchi];
+                const scalarField& magSfB = magSf.boundaryField()[patchi];
+                const scalarField& cB = c.boundaryField()[patchi];
+                forAll(pfB[patchi], facei)
+                {
+                    const label P = cells[facei];
+                    const scalar uB = epsB[facei]*phiB[facei]/magSfB[facei];
+                    const scalar hP = aI[P]*(uI[P] & SfB[facei])/magSfB[facei];
+                    pfB[patchi][facei] =
+                        pI[P] + rho/dcB[facei]*(hP + cB[facei] - aI[P]*uB);
+                }
+            }
             continue;
         }
         const scalarField aP(a.boundaryField()[patchi].patchInternalField());
