@@ -243,7 +243,10 @@ void CoupledRun::coupleAir()
     }
     {
         StageTimers::Scope s(timers_, StageTimers::Mapping);
-        const volVectorField gradP(fvc::grad(air_->p()));
+        // The air's own pressure gradient (Gauss on its face pressure): at a
+        // bed edge fvc::grad(p) with linearly interpolated face values gives
+        // the edge cell about half the gradient its particles carry.
+        const volVectorField& gradP = air_->gradP();
         step_->cellsToParticles
         (
             owned_,

@@ -62,7 +62,7 @@ void MonitorSet::values(const AirSolver& air, std::vector<double>& row) const
 {
     for (const auto& m : monitors_)
     {
-        const OutletValues v = m->evaluate(air.p(), air.phi(), air.eps(), air.rho());
+        const OutletValues v = m->evaluate(air.p(), air.pFace(), air.phi(), air.eps(), air.rho());
         row.push_back(v.pMean);
         row.push_back(v.dpdn);
         row.push_back(v.massFlux);

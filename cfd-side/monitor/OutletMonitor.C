@@ -136,13 +136,14 @@ scalar OutletMonitor::totalArea() const
 OutletValues OutletMonitor::evaluate
 (
     const volScalarField& p,
+    const surfaceScalarField& pFace,
     const surfaceScalarField& phi,
     const volScalarField& eps,
     scalar rho
 ) const
 {
     const surfaceScalarField snGradP(fvc::snGrad(p));
-    const surfaceScalarField pf(fvc::interpolate(p));
+    const surfaceScalarField& pf = pFace;
     const surfaceScalarField epsf(fvc::interpolate(eps));
     const surfaceScalarField& magSf = mesh_.magSf();
 
