@@ -119,7 +119,7 @@ public:
     double solidFraction(double p, double gammaDot) const override;
 
     // Inertial number at the floored (p, gammaDot); inputs checked.
-    double inertialNumber(double p, double gammaDot) const;
+    double inertialNumber(double p, double gammaDot) const override;
     // mu(I) of the chosen form, I >= 0.
     double friction(double I) const;
     // d mu / d I of the chosen form, I > 0.

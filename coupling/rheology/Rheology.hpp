@@ -58,6 +58,8 @@ public:
     virtual double viscosity(double p, double gammaDot) const = 0;
     // Solid volume fraction [-] of the flowing material at (p, gammaDot).
     virtual double solidFraction(double p, double gammaDot) const = 0;
+    // The dimensionless flow state the model uses (the inertial number I) [-].
+    virtual double inertialNumber(double p, double gammaDot) const = 0;
 };
 
 // The registry of rheologies, filled by registerRheologies() on first use.
