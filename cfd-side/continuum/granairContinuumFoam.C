@@ -186,7 +186,13 @@ int main(int argc, char* argv[])
                     Foam::granair::advectAlpha(alpha, phi, alphaPhi);
                     rhoPhi = alphaPhi*(rhoPowder - rhoAir) + phi*rhoAir;
                     mixture.correctDensity();
-                    mixture.correctViscosity(U, p);
+                }
+                // The viscosity at the latest U and p in every outer corrector, so
+                // nOuterCorrectors > 1 converges the rheology with the pressure
+                // (with 1 corrector it lags one step, as interFoam's).
+                mixture.correctViscosity(U, p);
+                if (pimple.firstIter())
+                {
                     air.solve(mixture, alphaPhi, phi);
                 }
                 const surfaceScalarField airForce(air.faceForce());

@@ -38,7 +38,7 @@ d=$(variant kinetic_rheology)
 sed -i 's/type        muI;/type latzSchmidt; c0 0.5579; cMax 0.5771; T0 0.41; eta0 0.00052; lambda0 0.001; eps0 332.84;/' "$d/$props"
 check "$d" "rheology 'latzSchmidt' needs the state.*use a pressure/shear-rate rheology" || fails=$((fails+1))
 
-d=$(variant negative_cap); sed -i 's/etaMax      1e4;/etaMax      -1;/' "$d/$props"
+d=$(variant negative_cap); sed -i "s/^\( *etaMax *\)[^;]*;/\1-1;/" "$d/$props"
 check "$d" "granularProperties.*etaMax = -1" || fails=$((fails+1))
 
 d=$(variant bad_outlet_patch); sed -i 's/^outletPatch .*/outletPatch     orifice;/' "$d/$props"
