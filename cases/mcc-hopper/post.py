@@ -1,0 +1,185 @@
+#!/usr/bin/env python3
+"""post.py: mass flow of one continuum MCC hopper run against Beverloo.
+
+Usage: post.py RUN_DIR OUT_DIR [--steady-from T] [--check] [--label TEXT]
+
+Reads RUN_DIR/postProcessing/timeSeries.csv (written by granairContinuumFoam,
+cfd-side/continuum/PowderBalance.H) and writes
+  OUT_DIR/mass_flow.csv   t [s], mass_flow_kg_s: the outlet mass flow averaged
+                          over consecutive 10 ms windows (the outlet flux of
+                          each solver step times its step, summed per window,
+                          over the window length; the per-step value carries
+                          a step-to-step oscillation that this removes)
+  OUT_DIR/mass_flow.png   that flow against time with the Beverloo band
+  OUT_DIR/summary.txt     key = value lines (steady mass flow, balance error, ...)
+
+The steady mass flow is the slope of the discharged outlet mass over
+[steady-from, end] (least squares), i.e. the mean flow in that window.
+
+--check exits 1 unless (tolerances from issue 8):
+  - every value in the time series is finite (no NaN/inf);
+  - the powder mass balance closes within 0.5 %:
+        |(m_domain(end) + m_out(end) - m_domain(0)) / m_domain(0)| <= 0.005,
+    m_out the time integral of the outlet flow recomputed here (so powder
+    leaving through any other boundary counts as a balance error), and the
+    solver's own mass_balance_error column (all boundaries) too;
+  - the initial powder mass is the 1000 g fill of Remmelgas et al. within
+    0.5 % (the fill is set by cases/mcc-hopper/mesh.py);
+  - the steady mass flow is > 0.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+# Beverloo et al. (1961), circular orifice: W = C rho_b sqrt(g) (D - k d)^2.5
+C_BEVERLOO = 0.58
+K_RANGE = (1.0, 3.0)
+RHO_BULK = 900.0     # kg/m3, VIVAPUR MCC Spheres 500 (reference case B)
+D_OUTLET = 0.025     # m
+D_PARTICLE = 660e-6  # m
+G = 9.81             # m/s2
+FILL_MASS = 1.0      # kg
+TOLERANCE = 0.005    # mass balance and fill, relative
+WINDOW = 0.01        # s, averaging window of mass_flow.csv
+
+
+def beverloo(k):
+    return C_BEVERLOO * RHO_BULK * math.sqrt(G) * (D_OUTLET - k * D_PARTICLE) ** 2.5
+
+
+def read_series(path):
+    with open(path) as fh:
+        rows = list(csv.DictReader(fh))
+    if len(rows) < 2:
+        sys.exit(f"post.py: {path} has {len(rows)} rows, expected at least 2")
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def least_squares_slope(x, y):
+    n = len(x)
+    mx, my = sum(x) / n, sum(y) / n
+    sxx = sum((a - mx) ** 2 for a in x)
+    if sxx == 0:
+        return float("nan")
+    return sum((a - mx) * (b - my) for a, b in zip(x, y)) / sxx
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("run")
+    ap.add_argument("out")
+    ap.add_argument("--steady-from", type=float, default=0.5)
+    ap.add_argument("--check", action="store_true")
+    ap.add_argument("--label", default="granairContinuumFoam")
+    args = ap.parse_args()
+
+    s = read_series(os.path.join(args.run, "postProcessing", "timeSeries.csv"))
+    t, flow, mass = s["t"], s["mass_flow_kg_s"], s["powder_mass_kg"]
+    finite = all(math.isfinite(v) for col in s.values() for v in col)
+
+    # Outlet mass passed up to each row: the flow of step i acts over (t[i-1], t[i]].
+    # Row 0 is the first step, taken from t = 0.
+    out_mass = []
+    acc = 0.0
+    for i in range(len(t)):
+        acc += flow[i] * (t[i] - (t[i - 1] if i > 0 else 0.0))
+        out_mass.append(acc)
+    initial = mass[0] + out_mass[0]
+    balance = (mass[-1] + out_mass[-1] - initial) / initial
+    solver_balance = max(abs(v) for v in s["mass_balance_error"])
+    fill_error = (initial - FILL_MASS) / FILL_MASS
+
+    # 10 ms window means.
+    win_t, win_w = [], []
+    start, i0 = 0.0, 0
+    for i in range(len(t)):
+        if t[i] >= start + WINDOW or i == len(t) - 1:
+            prev = out_mass[i0 - 1] if i0 > 0 else 0.0
+            t_prev = t[i0 - 1] if i0 > 0 else 0.0
+            if t[i] > t_prev:
+                win_t.append(0.5 * (t_prev + t[i]))
+                win_w.append((out_mass[i] - prev) / (t[i] - t_prev))
+            start, i0 = t[i], i + 1
+
+    steady = [(a, b) for a, b in zip(t, out_mass) if a >= args.steady_from]
+    if len(steady) >= 2:
+        w_steady = least_squares_slope([a for a, _ in steady], [b for _, b in steady])
+        w_sd = math.sqrt(sum((w - w_steady) ** 2 for a, w in zip(win_t, win_w) if a >= args.steady_from)
+                         / max(1, sum(1 for a in win_t if a >= args.steady_from)))
+    else:
+        w_steady, w_sd = float("nan"), float("nan")
+    bev_hi, bev_lo = beverloo(K_RANGE[0]), beverloo(K_RANGE[1])
+
+    os.makedirs(args.out, exist_ok=True)
+    with open(os.path.join(args.out, "mass_flow.csv"), "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["t", "mass_flow_kg_s"])
+        for a, b in zip(win_t, win_w):
+            w.writerow([f"{a:.6g}", f"{b:.6g}"])
+    summary = {
+        "t_end_s": t[-1],
+        "steady_from_s": args.steady_from,
+        "steady_mass_flow_kg_s": w_steady,
+        "window_mass_flow_sd_kg_s": w_sd,
+        "beverloo_k3_kg_s": bev_lo,
+        "beverloo_k1_kg_s": bev_hi,
+        "steady_over_beverloo_k1": w_steady / bev_hi,
+        "initial_powder_kg": initial,
+        "fill_error": fill_error,
+        "final_powder_kg": mass[-1],
+        "discharged_outlet_kg": out_mass[-1],
+        "mass_balance_error": balance,
+        "solver_mass_balance_error_max": solver_balance,
+        "all_finite": int(finite),
+    }
+    with open(os.path.join(args.out, "summary.txt"), "w") as fh:
+        for k, v in summary.items():
+            fh.write(f"{k} = {v:.6g}\n" if isinstance(v, float) else f"{k} = {v}\n")
+    print(f"mcc-hopper: steady mass flow {w_steady:.4g} kg/s (t >= {args.steady_from} s; sd of 10 ms means "
+          f"{w_sd:.2g}); Beverloo {bev_lo:.4g}-{bev_hi:.4g} kg/s (k = 3..1); mass balance error {balance:.2e} "
+          f"(solver max {solver_balance:.1e}); initial {initial:.6g} kg")
+
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(7, 4))
+        ax.axhspan(bev_lo, bev_hi, color="tab:orange", alpha=0.3,
+                   label=f"Beverloo, C = {C_BEVERLOO}, k = 1..3")
+        ax.plot(win_t, win_w, color="tab:blue", lw=1, label=f"{args.label} (10 ms means)")
+        if math.isfinite(w_steady):
+            ax.hlines(w_steady, args.steady_from, t[-1], colors="k", linestyles="--",
+                      label=f"mean for t >= {args.steady_from:g} s: {w_steady * 1e3:.1f} g/s")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("powder mass flow [kg/s]")
+        ax.set_ylim(0, max(1.3 * bev_hi, 1.1 * max(win_w + [0.0])))
+        ax.set_title("MCC hopper, D_o = 25 mm, 1000 g fill (Remmelgas et al. 2019)")
+        ax.legend(loc="upper right", fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, "mass_flow.png"), dpi=120)
+    except ImportError as e:  # plotting is a convenience; the checks below still run
+        print(f"post.py: no plot ({e}); use $GRANAIR_PYTHON (Debian python3 with matplotlib)", file=sys.stderr)
+
+    if args.check:
+        failures = []
+        if not finite:
+            failures.append("non-finite values in timeSeries.csv")
+        if not abs(balance) <= TOLERANCE:
+            failures.append(f"mass balance error {balance:.3e} exceeds {TOLERANCE}")
+        if not solver_balance <= TOLERANCE:
+            failures.append(f"solver mass balance error {solver_balance:.3e} exceeds {TOLERANCE}")
+        if not abs(fill_error) <= TOLERANCE:
+            failures.append(f"initial powder {initial:.6g} kg differs from the {FILL_MASS} kg fill by {fill_error:.3e}")
+        if not w_steady > 0:
+            failures.append(f"steady mass flow {w_steady} kg/s is not > 0")
+        if failures:
+            print("mcc-hopper check FAILED: " + "; ".join(failures), file=sys.stderr)
+            sys.exit(1)
+        print(f"mcc-hopper check passed: |balance| {abs(balance):.2e} <= {TOLERANCE}, fill {fill_error:.2e}, "
+              f"steady mass flow {w_steady:.4g} kg/s > 0")
+
+
+if __name__ == "__main__":
+    main()

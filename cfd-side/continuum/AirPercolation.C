@@ -1,0 +1,208 @@
+/*---------------------------------------------------------------------------*\
+    granair: AirPercolation (see AirPercolation.H)
+\*---------------------------------------------------------------------------*/
+#include "AirPercolation.H"
+
+#include <string>
+
+#include "GranularMixture.H"
+#include "core/Collective.hpp"
+#include "core/Error.hpp"
+#include "coupler/BedDrag.hpp"
+#include "zeroGradientFvPatchFields.H"
+
+namespace Foam
+{
+namespace granair
+{
+
+namespace
+{
+
+bool readModel(const ::granair::Dictionary& air)
+{
+    const std::string model = air.getString("model", "none");
+    if (model != "none" && model != "darcyErgun")
+    {
+        ::granair::fail<::granair::InputError>
+        (
+            air.where("model"), ": unknown air model '", model, "', expected one of: none darcyErgun"
+        );
+    }
+    return model == "darcyErgun";
+}
+
+volScalarField cellField(const fvMesh& mesh, const word& name, const dimensionSet& dims, scalar value, bool write)
+{
+    return volScalarField
+    (
+        IOobject(name, mesh.time().timeName(), mesh, IOobject::NO_READ, write ? IOobject::AUTO_WRITE : IOobject::NO_WRITE),
+        mesh,
+        dimensionedScalar(name, dims, value),
+        zeroGradientFvPatchScalarField::typeName
+    );
+}
+
+} // namespace
+
+AirPercolation::AirPercolation
+(
+    const fvMesh& mesh,
+    const ::granair::Dictionary& properties,
+    const GranularMixture& mixture
+)
+:
+    mesh_(mesh),
+    enabled_(readModel(properties.subDict("air"))),
+    d_(0),
+    air_{mixture.rhoAir(), mixture.muAir()},
+    dilatancy_(true),
+    bulkSolidFraction_(0),
+    threshold_(0.5),
+    pAir_
+    (
+        enabled_
+      ? volScalarField
+        (
+            IOobject("p_air", mesh.time().timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE),
+            mesh
+        )
+      : cellField(mesh, "p_air", dimPressure, 0, false)
+    ),
+    K_(cellField(mesh, "K", dimDensity/dimTime, 0, enabled_)),
+    eps_(cellField(mesh, "airFraction", dimless, 1, enabled_))
+{
+    if (!enabled_) return;
+
+    const ::granair::Dictionary& air = properties.subDict("air");
+    drag_ = ::granair::dragLaws().create(air.subDict("drag"));
+    d_ = air.getDouble("diameter", 1e-7, 1.0);
+    const std::string phiModel = air.getString("solidFraction", "dilatancy");
+    if (phiModel == "bulk")
+    {
+        dilatancy_ = false;
+        const scalar rhoP = air.getDouble("particleDensity", mixture.rhoPowder(), 1e5);
+        bulkSolidFraction_ = mixture.rhoPowder()/rhoP;
+    }
+    else if (phiModel != "dilatancy")
+    {
+        ::granair::fail<::granair::InputError>
+        (
+            air.where("solidFraction"), ": unknown value '", phiModel, "', expected one of: dilatancy bulk"
+        );
+    }
+    threshold_ = air.getDouble("powderThreshold", 1e-6, 1.0);
+    mesh_.setFluxRequired(pAir_.name());
+
+    const volScalarField a(min(max(mixture.alpha(), scalar(0)), scalar(1)));
+    eps_ = scalar(1) - a*solidFraction(mixture);
+    eps_.correctBoundaryConditions();
+}
+
+tmp<volScalarField> AirPercolation::solidFraction(const GranularMixture& mixture) const
+{
+    if (dilatancy_)
+    {
+        return tmp<volScalarField>::New("phiSolidAir", mixture.solidFraction());
+    }
+    return tmp<volScalarField>::New(cellField(mesh_, "phiSolidAir", dimless, bulkSolidFraction_, false));
+}
+
+void AirPercolation::solve
+(
+    const GranularMixture& mixture,
+    const surfaceScalarField& alphaPhi,
+    const surfaceScalarField& phi
+)
+{
+    if (!enabled_) return;
+
+    const volScalarField a(min(max(mixture.alpha(), scalar(0)), scalar(1)));
+    const volScalarField phiS(solidFraction(mixture));
+    volScalarField epsNew(scalar(1) - a*phiS);
+    epsNew.correctBoundaryConditions();
+
+    // d(eps)/dt + div(eps U) with eps U = U - alpha phi U, the powder part
+    // through the MULES flux alphaPhi so a constant phi gives div(phi) only.
+    const dimensionedScalar dt = mesh_.time().deltaT();
+    const volScalarField source
+    (
+        (epsNew - eps_)/dt + fvc::div(phi) - fvc::div(alphaPhi*fvc::interpolate(phiS))
+    );
+
+    // Drag coefficient at the lagged slip; zero in the air (K(eps = 1) = 0).
+    const volVectorField gradPa(fvc::grad(pAir_));
+    scalarField& K = K_.primitiveFieldRef();
+    DynamicList<label> airCells;
+    std::string error;
+    try
+    {
+        forAll(K, celli)
+        {
+            if (a[celli] < threshold_)
+            {
+                K[celli] = 0;
+                airCells.append(celli);
+                continue;
+            }
+            const scalar eps = epsNew[celli];
+            const scalar slip = K[celli] > 0 ? eps*mag(gradPa[celli])/K[celli] : 0;
+            try
+            {
+                K[celli] = ::granair::bedMomentumExchange(*drag_, d_, eps, slip, air_);
+            }
+            catch (const ::granair::InputError& e)
+            {
+                ::granair::fail<::granair::InputError>
+                (
+                    "air model darcyErgun: ", e.what(), " in cell ", celli, " (alpha ", a[celli], ", time ",
+                    mesh_.time().value(), " s)"
+                );
+            }
+        }
+    }
+    catch (const ::granair::InputError& e)
+    {
+        error = e.what();
+    }
+    ::granair::raiseIfAny(MPI_COMM_WORLD, error);
+    K_.correctBoundaryConditions();
+
+    // Face conductivity eps^2/K from the interpolated resistance K/eps^2
+    // (harmonic mean: a face next to an air cell gets twice the powder value).
+    const volScalarField resistance(K_/sqr(epsNew));
+    const dimensionedScalar minResistance("minResistance", resistance.dimensions(), 1e-3);
+    const surfaceScalarField conductivity(scalar(1)/max(fvc::interpolate(resistance), minResistance));
+
+    fvScalarMatrix pEqn(fvm::laplacian(conductivity, pAir_) == source);
+    pEqn.setValues(airCells, scalarField(airCells.size(), 0.0));
+    pEqn.solve();
+
+    eps_ = epsNew;
+}
+
+tmp<surfaceScalarField> AirPercolation::faceForce() const
+{
+    if (!enabled_)
+    {
+        return tmp<surfaceScalarField>::New
+        (
+            IOobject("airForce", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedScalar(dimPressure/dimLength, Zero)
+        );
+    }
+    return -fvc::snGrad(pAir_);
+}
+
+scalar AirPercolation::patchGradient(label patchi, const vector& direction) const
+{
+    const fvPatch& patch = mesh_.boundary()[patchi];
+    const scalarField dpdn(pAir_.boundaryField()[patchi].snGrad());
+    const scalarField area(patch.magSf());
+    const scalar totalArea = gSum(area);
+    return totalArea > 0 ? gSum(area*dpdn*(patch.nf() & direction))/totalArea : 0;
+}
+
+} // namespace granair
+} // namespace Foam

@@ -1,0 +1,123 @@
+/*---------------------------------------------------------------------------*\
+    granair: PowderBalance (see PowderBalance.H)
+\*---------------------------------------------------------------------------*/
+#include "PowderBalance.H"
+
+#include "AirPercolation.H"
+#include "core/Error.hpp"
+#include "uniformDimensionedFields.H"
+#include "wedgePolyPatch.H"
+
+namespace Foam
+{
+namespace granair
+{
+
+namespace
+{
+
+// Full revolution / wedge volume, 1 for a non-wedge mesh. A wedge of half
+// angle a whose vertices lie at (r, +-r tan a) (the axis at r = 0) holds
+// 2 tan(a) int r dA of each cell's section, the revolved cell 2 pi int r dA,
+// so the ratio is pi/tan(a) for every cell (cases/mcc-hopper builds its
+// wedge this way).
+scalar revolutionScale(const fvMesh& mesh)
+{
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<wedgePolyPatch>(pp))
+        {
+            const scalar halfAngle = acos(min(refCast<const wedgePolyPatch>(pp).cosAngle(), scalar(1)));
+            return constant::mathematical::pi/tan(halfAngle);
+        }
+    }
+    return 1;
+}
+
+} // namespace
+
+PowderBalance::PowderBalance
+(
+    const fvMesh& mesh,
+    const std::string& outletPatch,
+    scalar rhoPowder,
+    const volScalarField& alpha,
+    bool withAir,
+    const fileName& directory
+)
+:
+    mesh_(mesh),
+    outletPatch_(mesh.boundaryMesh().findPatchID(outletPatch)),
+    rhoPowder_(rhoPowder),
+    scale_(revolutionScale(mesh)),
+    up_(0, 0, 1),
+    air_(withAir),
+    initialMass_(0),
+    discharged_(0),
+    lastFlow_(0)
+{
+    if (outletPatch_ < 0)
+    {
+        ::granair::fail<::granair::InputError>
+        (
+            "constant/granularProperties, key 'outletPatch': no boundary patch named '", outletPatch, "'"
+        );
+    }
+    const uniformDimensionedVectorField& g = meshObjects::gravity::New(mesh.time());
+    if (mag(g.value()) > SMALL) up_ = -g.value()/mag(g.value());
+    initialMass_ = powderMass(alpha);
+
+    std::vector<::granair::Column> columns{
+        {"t", "s"}, {"mass_flow_kg_s", "kg/s"}, {"discharged_kg", "kg"}, {"powder_mass_kg", "kg"},
+        {"mass_balance_error", "-"}};
+    if (air_)
+    {
+        columns.push_back({"outlet_dpdz_Pa_m", "Pa/m"});
+        columns.push_back({"air_p_min_Pa", "Pa"});
+    }
+    mkDir(directory);
+    writer_ = std::make_unique<::granair::TimeSeriesWriter>(MPI_COMM_WORLD, directory/"timeSeries", columns);
+
+    Info<< "PowderBalance: outlet patch " << outletPatch.c_str() << ", full-revolution scale " << scale_
+        << ", initial powder mass " << initialMass_ << " kg" << nl << endl;
+}
+
+scalar PowderBalance::powderMass(const volScalarField& alpha) const
+{
+    return scale_*rhoPowder_*gSum(alpha.primitiveField()*mesh_.V().field());
+}
+
+scalar PowderBalance::relativeBalanceError(const volScalarField& alpha) const
+{
+    return (powderMass(alpha) + discharged_ - initialMass_)/initialMass_;
+}
+
+void PowderBalance::record(const volScalarField& alpha, const surfaceScalarField& alphaPhi, const AirPercolation& air)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    scalar outletFlux = 0;
+    scalar boundaryFlux = 0;
+    forAll(alphaPhi.boundaryField(), patchi)
+    {
+        if (mesh_.boundaryMesh()[patchi].coupled()) continue;
+        const scalar f = sum(alphaPhi.boundaryField()[patchi]);
+        boundaryFlux += f;
+        if (patchi == outletPatch_) outletFlux = f;
+    }
+    reduce(outletFlux, sumOp<scalar>());
+    reduce(boundaryFlux, sumOp<scalar>());
+    lastFlow_ = scale_*rhoPowder_*outletFlux;
+    discharged_ += scale_*rhoPowder_*boundaryFlux*dt;
+
+    const scalar mass = powderMass(alpha);
+    std::vector<double> row{mesh_.time().value(), lastFlow_, discharged_, mass, (mass + discharged_ - initialMass_)/initialMass_};
+    if (air_)
+    {
+        row.push_back(air.patchGradient(outletPatch_, up_));
+        row.push_back(gMin(air.pAir().primitiveField()));
+    }
+    writer_->append(row);
+}
+
+} // namespace granair
+} // namespace Foam

@@ -1,0 +1,13 @@
+// ShearRate.cpp: see ShearRate.hpp.
+#include "rheology/ShearRate.hpp"
+
+#include <cmath>
+
+namespace granair {
+
+double shearRate(const Eigen::Matrix3d& gradU) {
+    const Eigen::Matrix3d d = 0.5 * (gradU + gradU.transpose());
+    return std::sqrt(2.0 * d.cwiseProduct(d).sum());
+}
+
+}  // namespace granair

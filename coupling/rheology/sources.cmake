@@ -1,0 +1,5 @@
+list(APPEND GRANAIR_COUPLING_SOURCES
+  rheology/ShearRate.cpp
+  rheology/MuI.cpp
+  rheology/LatzSchmidt.cpp
+  rheology/registerRheologies.cpp)
