@@ -34,29 +34,40 @@ int FoamCellLocator::nCells() const
     return mesh_.nCells();
 }
 
+int FoamCellLocator::findCellNear(const ::granair::Vec3& x, int hint) const
+{
+    if (hint < 0 || hint >= mesh_.nCells() || !x.allFinite())
+    {
+        return -1;
+    }
+    const point p(toPoint(x));
+    // Face planes: ~6 dot products for a hex, exact for convex cells.
+    if (mesh_.pointInCell(p, hint, polyMesh::FACE_PLANES))
+    {
+        return hint;
+    }
+    for (const label nb : mesh_.cellCells()[hint])
+    {
+        if (mesh_.pointInCell(p, nb, polyMesh::FACE_PLANES))
+        {
+            return nb;
+        }
+    }
+    return -1;
+}
+
 int FoamCellLocator::findCell(const ::granair::Vec3& x, int hint) const
 {
     if (!x.allFinite() || !bounds_.contains(x))
     {
         return -1;
     }
-    const point p(toPoint(x));
-    if (hint >= 0 && hint < mesh_.nCells())
+    const int near = findCellNear(x, hint);
+    if (near >= 0)
     {
-        // Face planes: ~6 dot products for a hex, exact for convex cells.
-        if (mesh_.pointInCell(p, hint, polyMesh::FACE_PLANES))
-        {
-            return hint;
-        }
-        for (const label nb : mesh_.cellCells()[hint])
-        {
-            if (mesh_.pointInCell(p, nb, polyMesh::FACE_PLANES))
-            {
-                return nb;
-            }
-        }
+        return near;
     }
-    return mesh_.findCell(p, polyMesh::CELL_TETS);
+    return mesh_.findCell(toPoint(x), polyMesh::CELL_TETS);
 }
 
 double FoamCellLocator::cellVolume(int cell) const

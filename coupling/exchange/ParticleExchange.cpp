@@ -182,7 +182,7 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
     for (int b = 0; b < m.nOutboxes; ++b) m.outboxOfRank[m.outboxes[b].rank] = -1;
     m.nOutboxes = 0;
     m.selfDem.clear();
-    m.selfCell.clear();
+    // m.selfCell keeps the last step's cells: they are the first hints in 3.
     m.selfMulti.clear();
     m.multis.clear();
     m.multiCandidates.clear();
@@ -245,15 +245,24 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
     sparseExchange(m.comm, kTagRecords[m.forwardCalls++ % 2], sends, m.inbox);
 
     // ---- 3. locate: own records, then inbound ones ----
-    // The cell of the previous record is the hint for the next: DEM codes
-    // keep their particles sorted in space, so neighbours in the list are
-    // mostly in the same or an adjacent cell, which the locator tests before
-    // its global search (a full search per particle costs several times more).
+    // Two hints before the locator's global search (which costs tens of
+    // microseconds per particle on thin or skewed meshes):
+    // - own particles: the cell found at the same position of the list in the
+    //   last forward(). The DEM keeps its local order between re-sorts, and a
+    //   particle moves less than a cell per coupling step, so this is mostly
+    //   the particle's own last cell (no per-particle storage beyond the
+    //   selfCell list this class keeps anyway);
+    // - then the previous record's cell: DEM codes sort their particles in
+    //   space, so neighbours in the list are mostly in the same or an
+    //   adjacent cell (this also covers the steps right after a re-sort).
+    // Hints only choose where to look first; a wrong one never gives a wrong cell.
     int hint = -1;
+    const std::size_t previous = m.selfCell.size();
     m.selfCell.resize(m.selfDem.size());
     for (std::size_t j = 0; j < m.selfDem.size(); ++j) {
         const ParticleState& p = dem[m.selfDem[j]];
-        m.selfCell[j] = mesh_.findCell(p.x, hint);
+        const int near = j < previous ? mesh_.findCellNear(p.x, m.selfCell[j]) : -1;
+        m.selfCell[j] = near >= 0 ? near : mesh_.findCell(p.x, hint);
         if (m.selfCell[j] >= 0) hint = m.selfCell[j];
         if (m.selfCell[j] < 0 && !m.selfMulti[j])
             error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,

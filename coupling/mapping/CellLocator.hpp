@@ -19,6 +19,11 @@ public:
     // Local cell containing x, or -1 when x is not in this rank's part of the
     // mesh. `hint` is a cell near x (e.g. last step's cell) or -1.
     virtual int findCell(const Vec3& x, int hint = -1) const = 0;
+    // Cheap test: `hint` or one of its face neighbours if it holds x, else
+    // -1 (no global search). Lets a caller try a second hint before paying
+    // for findCell's global search. Where that search is cheap anyway (a
+    // structured box) the default simply calls findCell.
+    virtual int findCellNear(const Vec3& x, int hint) const { return findCell(x, hint); }
     virtual double cellVolume(int cell) const = 0;
     virtual Vec3 cellCentre(int cell) const = 0;
     // Local face neighbours of a cell (cells across processor boundaries are
