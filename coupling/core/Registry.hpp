@@ -44,8 +44,8 @@ public:
         if (it == factories_.end()) {
             std::string list;
             for (const auto& n : names()) list += "\n    " + n;
-            fail<InputError>(dict.where(key), ": unknown ", family_, " '", name, "'. Valid ", family_,
-                             "s are:", list);
+            fail<InputError>(dict.where(key), ": unknown ", family_, " '", name, "'. Known ", family_,
+                             " names:", list);
         }
         return it->second(dict);
     }

@@ -35,7 +35,7 @@ TEST_CASE("rheologies: bad input", "[rheology][input]") {
         CHECK_THROWS_WITH(granair::rheologies().create(dict.subDict("rheology")),
                           Contains("constant/granularProperties") && Contains("rheology.type") &&
                               Contains("unknown rheology 'muOfI'") &&
-                              Contains("Valid rheologys are:\n    latzSchmidt\n    muI"));
+                              Contains("Known rheology names:\n    latzSchmidt\n    muI"));
     }
 
     SECTION("muI rejects a bad state, naming the value") {
