@@ -103,16 +103,24 @@ def time_dir(run_dir, t):
 
 
 # --------------------------------------------------------------- analysis
-def steady_rate(t, y, t0):
-    """Least-squares slope of y(t) for t >= t0 (the steady discharge rate)."""
-    sel = t >= t0
+def steady_end(t, particles):
+    """End of the steady window: the time half of the fill has left the silo
+    (the rate falls once the free surface reaches the hopper and drops to 0
+    when the silo is empty), or the end of the run."""
+    half = np.nonzero(particles <= 0.5 * particles[0])[0]
+    return float(t[half[0]]) if half.size else float(t[-1])
+
+
+def steady_rate(t, y, t0, t1=None):
+    """Least-squares slope of y(t) for t0 <= t <= t1 (the steady discharge rate)."""
+    sel = (t >= t0) & (t <= (t[-1] if t1 is None else t1))
     if sel.sum() < 3:
         return float("nan")
     return float(np.polyfit(t[sel], y[sel], 1)[0])
 
 
-def window_mean(t, y, t0):
-    sel = t >= t0
+def window_mean(t, y, t0, t1=None):
+    sel = (t >= t0) & (t <= (t[-1] if t1 is None else t1))
     return float(np.mean(y[sel])) if sel.any() else float("nan")
 
 
@@ -287,14 +295,15 @@ def post_run(run_dir, out_dir, name):
     os.makedirs(out_dir, exist_ok=True)
     write_run_csv(series, case, os.path.join(out_dir, f"{name}.csv"))
     t = series["t"]
-    t0 = min(STEADY_FROM, 0.5 * t[-1])
+    t1 = steady_end(t, series["particles"])
+    t0 = min(STEADY_FROM, 0.5 * t1)
     summary = dict(name=name, b_mm=case.b_mm, air=case.air, s=case.s, size=case.size,
-                   t_end=float(t[-1]), steady_from_s=t0,
-                   W_kg_s=steady_rate(t, series["discharged_kg"], t0),
+                   t_end=float(t[-1]), steady_from_s=t0, steady_to_s=t1,
+                   W_kg_s=steady_rate(t, series["discharged_kg"], t0, t1),
                    balance=bal)
     if case.air:
         for key in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m"):
-            summary[key] = window_mean(t, series[key], t0)
+            summary[key] = window_mean(t, series[key], t0, t1)
         # "while discharging": from the first discharged particle on
         first = np.argmax(series["discharged_kg"] > 0)
         summary["outlet_p_mean_discharging_Pa"] = float(np.mean(series["outlet_p_Pa"][first:]))

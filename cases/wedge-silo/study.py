@@ -408,8 +408,8 @@ def check(summaries, res):
                 problems.append(f"{n}: column {col} missing from {n}.csv")
         series = post.read_series(os.path.join(os.path.dirname(res), "runs", f"b{s['b_mm']}",
                                                "air" if s["air"] else "noair"))
-        if not series["mass_flow_kg_s"][-1] > 0:
-            problems.append(f"{n}: mass flow at the end is {series['mass_flow_kg_s'][-1]} kg/s, expected > 0")
+        if not s["W_kg_s"] > 0:
+            problems.append(f"{n}: steady mass flow is {s['W_kg_s']} kg/s, expected > 0")
         if s["air"] and not s["outlet_p_mean_discharging_Pa"] < 0:
             problems.append(f"{n}: mean outlet air pressure while discharging "
                             f"{s['outlet_p_mean_discharging_Pa']:.4g} Pa, expected < 0 (below ambient)")
