@@ -406,8 +406,6 @@ def check(summaries, res):
         for col in ("t", "mass_flow_kg_s", "outlet_dpdz_Pa_m"):
             if col not in head:
                 problems.append(f"{n}: column {col} missing from {n}.csv")
-        series = post.read_series(os.path.join(os.path.dirname(res), "runs", f"b{s['b_mm']}",
-                                               "air" if s["air"] else "noair"))
         if not s["W_kg_s"] > 0:
             problems.append(f"{n}: steady mass flow is {s['W_kg_s']} kg/s, expected > 0")
         if s["air"] and not s["outlet_p_mean_discharging_Pa"] < 0:
