@@ -25,6 +25,8 @@ from matplotlib.collections import PolyCollection    # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import make_case as mc                                # noqa: E402
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "pylib"))
+import closed_forms as cf                             # noqa: E402
 
 G = mc.G
 BEVERLOO_C = 0.58        # Hagen-Beverloo constant used for the slot band (see README)
@@ -162,12 +164,13 @@ def fill_stats(fill_dir, case):
 
 def beverloo(b, d, rho_b, k):
     """Hagen-Beverloo for a slot, scaled to the full depth: C rho_b sqrt(g) (b - k d)^1.5 L."""
-    return BEVERLOO_C * rho_b * math.sqrt(G) * max(b - k * d, 0.0) ** 1.5 * mc.DEPTH
+    return cf.beverloo_slot(b, d, rho_b, mc.DEPTH, k, BEVERLOO_C, G)
 
 
 def crewdson(w0, dpdz, rho_b):
-    """Air-impeded rate W0 sqrt(1 + (dp/dz)/(rho_b g)) (Crewdson et al. 1977), z up."""
-    return w0 * np.sqrt(np.clip(1 + dpdz / (rho_b * G), 0, None))
+    """Air-impeded rate W0 sqrt(1 + (dp/dz)/(rho_b g)) (Crewdson et al. 1977), z up;
+    dp/dz a number or an array (the time series)."""
+    return np.vectorize(lambda x: cf.crewdson(w0, x, rho_b, G))(dpdz)
 
 
 # ------------------------------------------------------------------ output
@@ -297,7 +300,7 @@ def post_run(run_dir, out_dir, name):
     t = series["t"]
     t1 = steady_end(t, series["particles"])
     t0 = min(STEADY_FROM, 0.5 * t1)
-    summary = dict(name=name, b_mm=case.b_mm, air=case.air, s=case.s, size=case.size,
+    summary = dict(name=name, b_mm=case.b_mm, air=case.air, s=case.s, size=case.size, np=case.np,
                    t_end=float(t[-1]), steady_from_s=t0, steady_to_s=t1,
                    W_kg_s=steady_rate(t, series["discharged_kg"], t0, t1),
                    balance=bal)

@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+"""Closed-form discharge estimates (tools/pylib/closed_forms.py) against hand values.
+
+Hand values (computed on paper, 4 significant figures):
+- MCC hopper (reference case B): D = 25 mm, d = 660 um, rho_b = 900, C = 0.58:
+  k = 3: 0.58 * 900 * sqrt(9.81) * (0.02302)^2.5 = 0.1315 kg/s;
+  k = 1: (0.02434)^2.5 -> 0.1511 kg/s (the band in cases/mcc-hopper/README.md).
+- Slot b = 10 mm, L = 60 mm, d = 0.2 mm, rho_b = 600, k = 2:
+  0.58 * 600 * sqrt(9.81) * 0.06 * (0.0096)^1.5 = 65.40 * 9.406e-4 = 0.06151 kg/s.
+- Carleton (1972) without air: 4 V0^2 sin(theta)/B = g, V0 = sqrt(g B / (4 sin theta)):
+  B = 10 mm, theta = 15 deg: sqrt(0.0981 / 1.0353) = 0.3078 m/s.
+- Crewdson: dp/dz = -rho_b g / 2 halves the weight: W = W0 / sqrt(2);
+  dp/dz = -rho_b g stops the flow.
+"""
+import math
+import os
+import sys
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools", "pylib"))
+import closed_forms as cf   # noqa: E402
+
+
+class ClosedForms(unittest.TestCase):
+    def test_beverloo_circular_mcc_band(self):
+        lo, hi = cf.beverloo_band("circular", 0.025, 660e-6, 900.0)
+        self.assertAlmostEqual(lo, 0.1315, delta=5e-5)
+        self.assertAlmostEqual(hi, 0.1511, delta=5e-5)
+
+    def test_hagen_beverloo_slot(self):
+        w = cf.beverloo_slot(0.010, 0.2e-3, 600.0, 0.060, 2.0)
+        self.assertAlmostEqual(w, 0.06151, delta=5e-5)
+
+    def test_beverloo_closed_orifice_is_zero(self):
+        self.assertEqual(cf.beverloo_circular(1e-3, 1e-3, 900.0, 3.0), 0.0)
+
+    def test_slot_needs_length(self):
+        with self.assertRaises(ValueError):
+            cf.beverloo_band("slot", 0.01, 2e-4, 600.0)
+
+    def test_carleton_dry_root(self):
+        v = cf.carleton_velocity(0.010, 15.0, 2e-4, 1060.0)
+        self.assertAlmostEqual(v, 0.3078, delta=5e-5)
+
+    def test_carleton_air_solves_its_balance_and_slows(self):
+        B, th, d, rp, rf, mu = 0.010, 15.0, 218e-6, 1060.0, 1.2, 1.8e-5
+        v = cf.carleton_velocity(B, th, d, rp, rf, mu)
+        lhs = 4 * v * v * math.sin(math.radians(th)) / B + \
+            15 * rf ** (1 / 3) * mu ** (2 / 3) * v ** (4 / 3) / (rp * d ** (5 / 3))
+        self.assertAlmostEqual(lhs, 9.81, delta=1e-9)
+        r = cf.carleton_ratio(B, th, d, rp, rf, mu)
+        self.assertTrue(0 < r < 1)
+        # coarser particles feel less drag: the ratio tends to 1
+        self.assertGreater(cf.carleton_ratio(B, th, 10 * d, rp, rf, mu), r)
+
+    def test_crewdson(self):
+        self.assertAlmostEqual(cf.crewdson(1.0, -600.0 * 9.81 / 2, 600.0), 1 / math.sqrt(2), delta=1e-12)
+        self.assertEqual(cf.crewdson(1.0, -600.0 * 9.81 * 1.5, 600.0), 0.0)
+        self.assertEqual(cf.crewdson(0.3, 0.0, 600.0), 0.3)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
