@@ -2,6 +2,7 @@
 """post.py: mass flow of one continuum MCC hopper run against Beverloo.
 
 Usage: post.py RUN_DIR OUT_DIR [--steady-from T] [--check] [--label TEXT]
+               [--model TEXT --wall-s S --cores N]
 
 Reads RUN_DIR/postProcessing/timeSeries.csv (written by granairContinuumFoam,
 cfd-side/continuum/PowderBalance.H) and writes
@@ -12,6 +13,9 @@ cfd-side/continuum/PowderBalance.H) and writes
                           a step-to-step oscillation that this removes)
   OUT_DIR/mass_flow.png   that flow against time with the Beverloo band
   OUT_DIR/summary.txt     key = value lines (steady mass flow, balance error, ...)
+  OUT_DIR/level.json      this run as the continuum level of `./granair compare`
+                          (docs/fidelity-levels.md); with air, mass_flow.csv and
+                          level.json also carry the outlet air pressure gradient
 
 The steady mass flow is the slope of the discharged outlet mass over
 [steady-from, end] (least squares), i.e. the mean flow in that window.
@@ -29,6 +33,7 @@ The steady mass flow is the slope of the discharged outlet mass over
 """
 import argparse
 import csv
+import json
 import math
 import os
 import sys
@@ -73,6 +78,9 @@ def main():
     ap.add_argument("--steady-from", type=float, default=0.5)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--label", default="granairContinuumFoam")
+    ap.add_argument("--model", default="mu(I)", help="level.json: short description of the run")
+    ap.add_argument("--wall-s", type=float, default=float("nan"), help="level.json: wall time of the run [s]")
+    ap.add_argument("--cores", type=int, default=1, help="level.json: MPI ranks of the run")
     args = ap.parse_args()
 
     s = read_series(os.path.join(args.run, "postProcessing", "timeSeries.csv"))
@@ -91,8 +99,9 @@ def main():
     solver_balance = max(abs(v) for v in s["mass_balance_error"])
     fill_error = (initial - FILL_MASS) / FILL_MASS
 
-    # 10 ms window means.
-    win_t, win_w = [], []
+    # 10 ms window means (flow from the outlet mass; air gradient as a time mean).
+    dpdz = s.get("outlet_dpdz_Pa_m")
+    win_t, win_w, win_g = [], [], []
     start, i0 = 0.0, 0
     for i in range(len(t)):
         if t[i] >= start + WINDOW or i == len(t) - 1:
@@ -101,6 +110,9 @@ def main():
             if t[i] > t_prev:
                 win_t.append(0.5 * (t_prev + t[i]))
                 win_w.append((out_mass[i] - prev) / (t[i] - t_prev))
+                if dpdz is not None:
+                    win_g.append(sum(dpdz[j] * (t[j] - (t[j - 1] if j > 0 else 0.0)) for j in range(i0, i + 1))
+                                 / (t[i] - t_prev))
             start, i0 = t[i], i + 1
 
     steady = [(a, b) for a, b in zip(t, out_mass) if a >= args.steady_from]
@@ -115,9 +127,19 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "mass_flow.csv"), "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow(["t", "mass_flow_kg_s"])
-        for a, b in zip(win_t, win_w):
-            w.writerow([f"{a:.6g}", f"{b:.6g}"])
+        w.writerow(["t", "mass_flow_kg_s"] + (["outlet_dpdz_Pa_m"] if dpdz is not None else []))
+        for i, (a, b) in enumerate(zip(win_t, win_w)):
+            w.writerow([f"{a:.6g}", f"{b:.6g}"] + ([f"{win_g[i]:.6g}"] if dpdz is not None else []))
+    dpdz_steady = None
+    if dpdz is not None:
+        sel = [(t[j] - (t[j - 1] if j > 0 else 0.0), dpdz[j]) for j in range(len(t)) if t[j] >= args.steady_from]
+        dpdz_steady = sum(a * b for a, b in sel) / sum(a for a, _ in sel) if sel else float("nan")
+    with open(os.path.join(args.out, "level.json"), "w") as fh:
+        json.dump({"case": "mcc-hopper", "level": "continuum", "model": args.model, "b_mm": D_OUTLET * 1e3,
+                   "air": dpdz is not None, "steady_mass_flow_kg_s": w_steady,
+                   "steady_window_s": [args.steady_from, t[-1]], "outlet_dpdz_Pa_m": dpdz_steady,
+                   "wall_time_s": args.wall_s, "cores": args.cores, "timeseries": "mass_flow.csv"},
+                  fh, indent=1)
     summary = {
         "t_end_s": t[-1],
         "steady_from_s": args.steady_from,

@@ -276,6 +276,7 @@ def main():
                                                          fills[s["b_mm"]]["rho_b"]))
     study_plots(summaries, fills, series, res, a.size)
     write_summary(summaries, fills, timings, res, time.time() - t_start, a)
+    write_levels(summaries, fills, res)
     problems = check(summaries, res) if a.check else []
     print(open(os.path.join(res, "summary.txt")).read())
     if problems:
@@ -348,6 +349,22 @@ def write_summary(summaries, fills, timings, res, wall, a):
         lines.append("  " + line)
     with open(os.path.join(res, "summary.txt"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
+
+
+def write_levels(summaries, fills, res):
+    """<name>.level.json per run: this run as a fidelity level for `./granair compare`
+    (docs/fidelity-levels.md): coarse-grained DEM, with air (cg-dem-cfd) or without (cg-dem)."""
+    for s in summaries:
+        level = dict(case="wedge-silo", level="cg-dem-cfd" if s["air"] else "cg-dem",
+                     model=f"DEM{'-CFD' if s['air'] else ''}, s = {s['s']:.3g}, {s['size']} size",
+                     b_mm=s["b_mm"], air=bool(s["air"]), steady_mass_flow_kg_s=s["W_kg_s"],
+                     steady_window_s=[s["steady_from_s"], s["steady_to_s"]],
+                     outlet_dpdz_Pa_m=s.get("outlet_dpdz_Pa_m") if s["air"] else None,
+                     wall_time_s=s["balance"]["wall_time_s"], cores=s["np"],
+                     timeseries=f"{s['name']}.csv", parcels=fills[s["b_mm"]]["n_parcels"],
+                     coarse_graining_factor=s["s"])
+        with open(os.path.join(res, f"{s['name']}.level.json"), "w") as fh:
+            json.dump(level, fh, indent=1, default=float)
 
 
 def makespan(durations, jobs):
