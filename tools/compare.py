@@ -1,0 +1,383 @@
+#!/usr/bin/env python3
+"""compare.py: every fidelity level of one case at one orifice size, side by side.
+
+    ./granair compare CASE_DIR [--b MM] [--run LEVEL ...|all] [--from DIR ...] [--out DIR]
+
+Levels (docs/fidelity-levels.md): closed-form (Beverloo / Hagen-Beverloo and
+Carleton's air-impeded estimate, computed here), continuum
+(granairContinuumFoam), cg-dem and cg-dem-cfd (coarse-grained DEM without and
+with air, granairFoam), dem-cfd (unscaled particles, where it was run).
+
+The case folder's compare.json holds the closed-form inputs, where each level
+writes its results and the command that produces them. Each run writes a
+`level.json` (or `<name>.level.json`) next to its time series; this script
+collects those under the case's result folders (committed references
+included), `--from` folders and its own `--run` output, and writes to --out
+(default CASE_DIR/compare/b<MM>):
+    compare.csv, compare.md   level, model, air, steady mass flow, outlet dp/dz,
+                              wall time, cores (+ W over the Beverloo middle,
+                              the Crewdson check, the source folder)
+    mass_flow.png             mass flow vs time of every level with a time
+                              series, the Beverloo band and the Carleton estimate
+    outlet_dpdz.png           outlet air pressure gradient vs time (runs with air)
+Without --run nothing is simulated: levels with no results are listed with
+the command that would produce them. --run LEVEL runs that level's command
+first (its output under OUT/runs/), --run all every level the case can run.
+"""
+import argparse
+import csv
+import glob
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "pylib"))
+import closed_forms as cf   # noqa: E402
+
+LEVELS = ["closed-form", "continuum", "cg-dem", "cg-dem-cfd", "dem-cfd"]
+LEVEL_KEYS = ("case", "level", "model", "b_mm", "air", "steady_mass_flow_kg_s",
+              "steady_window_s", "outlet_dpdz_Pa_m", "wall_time_s", "cores", "timeseries")
+
+
+class CompareError(Exception):
+    pass
+
+
+# ------------------------------------------------------------------ inputs
+def load_spec(case_dir):
+    path = os.path.join(case_dir, "compare.json")
+    if not os.path.exists(path):
+        raise CompareError(f"{path}: not found (a comparable case folder has a compare.json)")
+    with open(path) as fh:
+        try:
+            spec = json.load(fh)
+        except json.JSONDecodeError as e:
+            raise CompareError(f"{path}: not valid JSON ({e})")
+
+    def need(d, key, where, kind=None):
+        if key not in d:
+            raise CompareError(f"{path}: key '{where}{key}' missing")
+        if kind is not None and not isinstance(d[key], kind):
+            raise CompareError(f"{path}: key '{where}{key}' must be {kind.__name__ if isinstance(kind, type) else 'a number'}, "
+                               f"got {d[key]!r}")
+        return d[key]
+
+    num = (int, float)
+    need(spec, "case", "", str)
+    orifice = need(spec, "orifice", "", str)
+    if orifice not in ("slot", "circular"):
+        raise CompareError(f"{path}: key 'orifice' must be 'slot' or 'circular', got {orifice!r}")
+    if orifice == "slot":
+        need(spec, "slot_length_m", "", num)
+    for key in ("hopper_half_angle_deg", "d_m", "rho_p", "rho_b"):
+        if not need(spec, key, "", num) > 0:
+            raise CompareError(f"{path}: key '{key}' must be > 0, got {spec[key]}")
+    air = need(spec, "air", "", dict)
+    need(air, "rho", "air.", num)
+    need(air, "mu", "air.", num)
+    bev = need(spec, "beverloo", "", dict)
+    need(bev, "C", "beverloo.", num)
+    k = need(bev, "k", "beverloo.", list)
+    if len(k) != 2:
+        raise CompareError(f"{path}: key 'beverloo.k' must be [k_min, k_max], got {k!r}")
+    need(spec, "b_mm", "", list)
+    need(spec, "results", "", list)
+    for i, r in enumerate(spec.get("runs", [])):
+        need(r, "levels", f"runs[{i}].", list)
+        need(r, "command", f"runs[{i}].", str)
+        for lv in r["levels"]:
+            if lv not in LEVELS:
+                raise CompareError(f"{path}: runs[{i}].levels has unknown level {lv!r}; known: {', '.join(LEVELS)}")
+    spec["_path"] = path
+    return spec
+
+
+def read_level(path):
+    with open(path) as fh:
+        try:
+            d = json.load(fh)
+        except json.JSONDecodeError as e:
+            raise CompareError(f"{path}: not valid JSON ({e})")
+    missing = [k for k in LEVEL_KEYS if k not in d]
+    if missing:
+        raise CompareError(f"{path}: key(s) {', '.join(missing)} missing (see docs/fidelity-levels.md)")
+    if d["level"] not in LEVELS:
+        raise CompareError(f"{path}: level {d['level']!r} unknown; known: {', '.join(LEVELS)}")
+    d["_path"] = path
+    d["_dir"] = os.path.dirname(path)
+    return d
+
+
+def read_series(level):
+    path = os.path.join(level["_dir"], level["timeseries"])
+    if not os.path.exists(path):
+        raise CompareError(f"{level['_path']}: key 'timeseries' names {path}, which does not exist")
+    with open(path) as fh:
+        rows = list(csv.reader(fh))
+    head = rows[0]
+    for col in ("t", "mass_flow_kg_s"):
+        if col not in head:
+            raise CompareError(f"{path}: column {col} missing (header {','.join(head)})")
+    cols = {h: [] for h in head}
+    for r in rows[1:]:
+        for h, v in zip(head, r):
+            cols[h].append(float(v))
+    return cols
+
+
+def find_levels(case, b_mm, dirs):
+    found, seen = [], set()
+    for d in dirs:
+        for path in sorted(glob.glob(os.path.join(d, "**", "*level.json"), recursive=True)):
+            real = os.path.realpath(path)
+            if real in seen:
+                continue
+            seen.add(real)
+            lv = read_level(path)
+            if lv["case"] == case and abs(float(lv["b_mm"]) - b_mm) < 1e-6:
+                found.append(lv)
+    return found
+
+
+# -------------------------------------------------------------- closed form
+def closed_form_rows(spec, b_mm):
+    t0 = time.perf_counter()
+    B = b_mm * 1e-3
+    bev = spec["beverloo"]
+    lo, hi = cf.beverloo_band(spec["orifice"], B, spec["d_m"], spec["rho_b"], tuple(bev["k"]), bev["C"],
+                              spec.get("slot_length_m"))
+    ratio = cf.carleton_ratio(B, spec["hopper_half_angle_deg"], spec["d_m"], spec["rho_p"],
+                              spec["air"]["rho"], spec["air"]["mu"])
+    wall = time.perf_counter() - t0
+    name = "Hagen-Beverloo (slot)" if spec["orifice"] == "slot" else "Beverloo"
+    kk = f"C = {bev['C']}, k = {min(bev['k']):g}..{max(bev['k']):g}"
+    mid = 0.5 * (lo + hi)
+    rows = [dict(level="closed-form", model=f"{name}, {kk}: band {lo:.4g}..{hi:.4g} kg/s", air=False,
+                 steady_mass_flow_kg_s=mid, outlet_dpdz_Pa_m=None, wall_time_s=wall, cores=1,
+                 source=os.path.relpath(spec["_path"])),
+             dict(level="closed-form", model=f"{name} x Carleton (1972) air drag: x{ratio:.3f}", air=True,
+                  steady_mass_flow_kg_s=mid * ratio, outlet_dpdz_Pa_m=None, wall_time_s=wall, cores=1,
+                  source=os.path.relpath(spec["_path"]))]
+    return rows, (lo, hi), ratio
+
+
+# ------------------------------------------------------------------ runs
+def run_levels(spec, case_dir, b_mm, wanted, out):
+    runs = spec.get("runs", [])
+    done = []
+    for i, r in enumerate(runs):
+        if not (set(r["levels"]) & wanted):
+            continue
+        run_out = os.path.join(out, "runs", f"{i}-{'-'.join(r['levels'])}")
+        cmd = r["command"].format(b=f"{b_mm:g}", out=run_out, case=case_dir)
+        print(f"[compare] running {', '.join(r['levels'])}: {cmd}", flush=True)
+        t0 = time.time()
+        proc = subprocess.run(["bash", "-c", cmd], cwd=case_dir)
+        if proc.returncode != 0:
+            raise CompareError(f"[compare] `{cmd}` failed (exit {proc.returncode}) in {case_dir}")
+        print(f"[compare] {', '.join(r['levels'])} done after {time.time() - t0:.0f} s", flush=True)
+        done.append(run_out)
+    unknown = wanted - {lv for r in runs for lv in r["levels"]}
+    if unknown:
+        raise CompareError(f"{spec['_path']}: no run command for level(s) {', '.join(sorted(unknown))}; "
+                           f"runnable: {', '.join(sorted({lv for r in runs for lv in r['levels']})) or 'none'}")
+    return done
+
+
+# ------------------------------------------------------------------ output
+def fmt(v, spec="{:.4g}"):
+    if v is None or (isinstance(v, float) and math.isnan(v)):
+        return "-"
+    return spec.format(v)
+
+
+def table(rows, band):
+    mid = 0.5 * (band[0] + band[1])
+    head = ["level", "model", "air", "steady mass flow [kg/s]", "outlet dp/dz [Pa/m]", "wall time [s]",
+            "cores", "W / Beverloo middle", "Crewdson check [kg/s]", "source"]
+    body = []
+    for r in rows:
+        w = r.get("steady_mass_flow_kg_s")
+        body.append([r["level"], r["model"], "yes" if r["air"] else "no", fmt(w), fmt(r.get("outlet_dpdz_Pa_m")),
+                     fmt(r.get("wall_time_s"), "{:.3g}"), fmt(r.get("cores"), "{}"),
+                     fmt(None if w is None else w / mid, "{:.2f}"), fmt(r.get("crewdson_kg_s")),
+                     r.get("source", "")])
+    return head, body
+
+
+# the dry level a run with air is checked against (same particles or same continuum model)
+DRY_OF = {"cg-dem-cfd": "cg-dem", "continuum": "continuum", "dem-cfd": "dem-cfd"}
+
+
+def add_crewdson(rows, rho_b):
+    """Crewdson's estimate for each run with air, from the dry run of the matching
+    level in the same results folder: W_dry sqrt(1 + (dp/dz)/(rho_b g)), to set
+    beside the run's own W (does the outlet gradient explain the slow-down?)."""
+    for r in rows:
+        if r["air"] and r.get("outlet_dpdz_Pa_m") is not None and r["level"] in DRY_OF:
+            dry = [x for x in rows if x["level"] == DRY_OF[r["level"]] and not x["air"]
+                   and x.get("group") == r.get("group")]
+            if dry:
+                r["crewdson_kg_s"] = cf.crewdson(dry[0]["steady_mass_flow_kg_s"], r["outlet_dpdz_Pa_m"], rho_b)
+
+
+def group_of(level):
+    """Runs written together: one folder of <name>.level.json files, or sibling
+    run folders each holding a level.json."""
+    d = os.path.realpath(level["_dir"])
+    return os.path.dirname(d) if os.path.basename(level["_path"]) == "level.json" else d
+
+
+def plot(rows, band, ratio, out, title):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    # one colour per level family and results folder: dry dotted, with air solid
+    families = []
+    for r in rows:
+        key = (DRY_OF.get(r["level"], r["level"]), r.get("group"))
+        if r.get("series") is not None and key not in families:
+            families.append(key)
+    colour = {k: f"C{i % 10}" for i, k in enumerate(families)}
+
+    def colour_of(r):
+        return colour[(DRY_OF.get(r["level"], r["level"]), r.get("group"))]
+
+    fig, ax = plt.subplots(figsize=(8, 4.8))
+    ax.axhspan(band[0], band[1], color="0.85", label="Beverloo band (closed form, dry)")
+    ax.axhline(0.5 * (band[0] + band[1]) * ratio, color="0.4", ls="--", lw=1,
+               label="Beverloo x Carleton (closed form, air)")
+    for r in rows:
+        s = r.get("series")
+        if s is None:
+            continue
+        ax.plot(s["t"], s["mass_flow_kg_s"], lw=1.2, ls="-" if r["air"] else ":", color=colour_of(r),
+                label=f"{r['level']}: {r['model']}, {'air' if r['air'] else 'dry'}")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("mass flow [kg/s]")
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=7, loc="best")
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "mass_flow.png"), dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(8, 4.8))
+    n = 0
+    for r in rows:
+        s = r.get("series")
+        if s is None or not r["air"] or "outlet_dpdz_Pa_m" not in s:
+            continue
+        ax.plot(s["t"], s["outlet_dpdz_Pa_m"], lw=1.2, color=colour_of(r), label=f"{r['level']}: {r['model']}")
+        n += 1
+    if n == 0:
+        ax.text(0.5, 0.5, "no run with air has an outlet pressure gradient", ha="center",
+                transform=ax.transAxes)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("outlet air pressure gradient dp/dz [Pa/m]")
+    ax.set_title(title, fontsize=10)
+    if n:
+        ax.legend(fontsize=7, loc="best")
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "outlet_dpdz.png"), dpi=120)
+    plt.close(fig)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("case_dir")
+    ap.add_argument("--b", type=float, default=None, help="orifice width/diameter [mm] (default: the case's default)")
+    ap.add_argument("--run", nargs="+", default=[], metavar="LEVEL",
+                    help=f"run these levels first ({', '.join(LEVELS[1:])} or all)")
+    ap.add_argument("--from", dest="from_dirs", nargs="+", default=[], metavar="DIR",
+                    help="more folders to collect level.json files from")
+    ap.add_argument("--out", default=None)
+    a = ap.parse_args(argv)
+
+    case_dir = os.path.abspath(a.case_dir)
+    spec = load_spec(case_dir)
+    b_mm = a.b if a.b is not None else float(spec.get("default_b_mm", spec["b_mm"][0]))
+    if b_mm not in [float(x) for x in spec["b_mm"]]:
+        print(f"[compare] note: b = {b_mm:g} mm is not one of the case's studied sizes "
+              f"({', '.join(str(x) for x in spec['b_mm'])}); only what exists for it is shown", flush=True)
+    out = os.path.abspath(a.out or os.path.join(case_dir, "compare", f"b{b_mm:g}"))
+    os.makedirs(out, exist_ok=True)
+
+    wanted = set()
+    for lv in a.run:
+        if lv == "all":
+            wanted |= {x for r in spec.get("runs", []) for x in r["levels"]}
+        elif lv in LEVELS[1:]:
+            wanted.add(lv)
+        else:
+            raise CompareError(f"--run: unknown level {lv!r}; known: {', '.join(LEVELS[1:])}, all")
+    ran = run_levels(spec, case_dir, b_mm, wanted, out) if wanted else []
+
+    dirs = [os.path.join(case_dir, d) for d in spec["results"]] + \
+           [os.path.abspath(d) for d in a.from_dirs] + ran
+    rows, band, ratio = closed_form_rows(spec, b_mm)
+    for lv in find_levels(spec["case"], b_mm, dirs):
+        series = read_series(lv)
+        rows.append(dict(level=lv["level"], model=lv["model"], air=bool(lv["air"]),
+                         steady_mass_flow_kg_s=lv["steady_mass_flow_kg_s"],
+                         outlet_dpdz_Pa_m=lv["outlet_dpdz_Pa_m"] if lv["air"] else None,
+                         wall_time_s=lv["wall_time_s"], cores=lv["cores"],
+                         group=group_of(lv),
+                         source=os.path.relpath(lv["_dir"]), series=series))
+    add_crewdson(rows, spec["rho_b"])
+    rows.sort(key=lambda r: (LEVELS.index(r["level"]), r["air"], r.get("source", "")))
+    present = {r["level"] for r in rows}
+    missing = []
+    for lv in LEVELS:
+        if lv in present:
+            continue
+        cmd = [r["command"] for r in spec.get("runs", []) if lv in r["levels"]]
+        why = spec.get("not_run", {}).get(lv, "")
+        how = f"run it: `./granair compare {os.path.relpath(case_dir)} --b {b_mm:g} --run {lv}`" if cmd else ""
+        missing.append((lv, " ".join(x for x in (why or "no results found;", how) if x)))
+
+    head, body = table(rows, band)
+    with open(os.path.join(out, "compare.csv"), "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["level", "model", "air", "steady_mass_flow_kg_s", "outlet_dpdz_Pa_m", "wall_time_s",
+                    "cores", "w_over_beverloo_middle", "crewdson_kg_s", "source"])
+        for r, line in zip(rows, body):
+            w.writerow([r["level"], r["model"], int(r["air"]), r["steady_mass_flow_kg_s"],
+                        "" if r.get("outlet_dpdz_Pa_m") is None else r["outlet_dpdz_Pa_m"],
+                        r["wall_time_s"], r["cores"], line[7] if line[7] != "-" else "",
+                        r.get("crewdson_kg_s", ""), r.get("source", "")])
+        for lv, why in missing:
+            w.writerow([lv, why, "", "", "", "", "", "", "", ""])
+    title = f"{spec['case']}, {'slot' if spec['orifice'] == 'slot' else 'orifice'} b = {b_mm:g} mm"
+    lines = [f"# Fidelity levels: {title}", "",
+             f"Written by `./granair compare` from {os.path.relpath(spec['_path'])} and the runs' level.json files. "
+             f"Steady mass flow for the whole {'silo (full depth)' if spec['orifice'] == 'slot' else 'hopper'}; "
+             f"outlet dp/dz is the mean air pressure gradient at the orifice over the steady window (z up: "
+             f"negative = suction). Crewdson check: W(dry, same level) x sqrt(1 + (dp/dz)/(rho_b g)) with "
+             f"rho_b = {spec['rho_b']:g} kg/m3. Closed forms: tools/pylib/closed_forms.py.", "",
+             "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    lines += ["| " + " | ".join(str(x) for x in line) + " |" for line in body]
+    if missing:
+        lines += ["", "Not in the table:"]
+        lines += [f"- **{lv}**: {why}" for lv, why in missing]
+    lines += ["", "Plots: mass_flow.png, outlet_dpdz.png."]
+    md = "\n".join(lines) + "\n"
+    with open(os.path.join(out, "compare.md"), "w") as fh:
+        fh.write(md)
+    plot(rows, band, ratio, out, title)
+    print(md)
+    print(f"[compare] results in {out}: compare.csv, compare.md, mass_flow.png, outlet_dpdz.png", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except CompareError as e:
+        print(f"granair compare: {e}", file=sys.stderr)
+        sys.exit(2)
