@@ -57,6 +57,7 @@ AirPercolation::AirPercolation
     d_(0),
     air_{mixture.rhoAir(), mixture.muAir()},
     dilatancy_(true),
+    dilatancyRate_(4.09),
     bulkSolidFraction_(0),
     threshold_(0.5),
     pAir_
@@ -70,7 +71,8 @@ AirPercolation::AirPercolation
       : cellField(mesh, "p_air", dimPressure, 0, false)
     ),
     K_(cellField(mesh, "K", dimDensity/dimTime, 0, enabled_)),
-    eps_(cellField(mesh, "airFraction", dimless, 1, enabled_))
+    eps_(cellField(mesh, "airFraction", dimless, 1, enabled_)),
+    packing_(cellField(mesh, "packing", dimless, 0, enabled_))
 {
     if (!enabled_) return;
 
@@ -91,21 +93,49 @@ AirPercolation::AirPercolation
             air.where("solidFraction"), ": unknown value '", phiModel, "', expected one of: dilatancy bulk"
         );
     }
+    else if (air.has("dilatancyRate"))
+    {
+        dilatancyRate_ = air.getDouble("dilatancyRate", 0.0, 1e6);
+    }
     threshold_ = air.getDouble("powderThreshold", 1e-6, 1.0);
     mesh_.setFluxRequired(pAir_.name());
 
+    // The packing starts at phi(I) of the initial state (the rest value
+    // before the first viscosity update), so the first step sees no jump.
+    if (dilatancy_)
+    {
+        packing_ = mixture.solidFraction();
+    }
+    else
+    {
+        packing_ = dimensionedScalar("phiBulk", dimless, bulkSolidFraction_);
+    }
+    packing_.correctBoundaryConditions();
     const volScalarField a(min(max(mixture.alpha(), scalar(0)), scalar(1)));
-    eps_ = scalar(1) - a*solidFraction(mixture);
+    eps_ = scalar(1) - a*packing_;
     eps_.correctBoundaryConditions();
 }
 
-tmp<volScalarField> AirPercolation::solidFraction(const GranularMixture& mixture) const
+tmp<volScalarField> AirPercolation::solidFraction(const GranularMixture& mixture, scalar dt) const
 {
-    if (dilatancy_)
+    if (!dilatancy_)
     {
-        return tmp<volScalarField>::New("phiSolidAir", mixture.solidFraction());
+        return tmp<volScalarField>::New(cellField(mesh_, "phiSolidAir", dimless, bulkSolidFraction_, false));
     }
-    return tmp<volScalarField>::New(cellField(mesh_, "phiSolidAir", dimless, bulkSolidFraction_, false));
+    // d(phi)/dt = -k phi gammaDot (phi - phi(I)), implicit with the rate at the old phi:
+    // phi_new = (phi + r dt phi(I)) / (1 + r dt), r = k phi gammaDot >= 0; bounded
+    // between phi and phi(I) for any dt.
+    tmp<volScalarField> tphi(tmp<volScalarField>::New("phiSolidAir", packing_));
+    scalarField& phi = tphi.ref().primitiveFieldRef();
+    const scalarField& target = mixture.solidFraction().primitiveField();
+    const scalarField& gammaDot = mixture.shearRate().primitiveField();
+    forAll(phi, celli)
+    {
+        const scalar rdt = dilatancyRate_*phi[celli]*gammaDot[celli]*dt;
+        phi[celli] = (phi[celli] + rdt*target[celli])/(1 + rdt);
+    }
+    tphi.ref().correctBoundaryConditions();
+    return tphi;
 }
 
 void AirPercolation::solve
@@ -117,14 +147,14 @@ void AirPercolation::solve
 {
     if (!enabled_) return;
 
+    const dimensionedScalar dt = mesh_.time().deltaT();
     const volScalarField a(min(max(mixture.alpha(), scalar(0)), scalar(1)));
-    const volScalarField phiS(solidFraction(mixture));
+    const volScalarField phiS(solidFraction(mixture, dt.value()));
     volScalarField epsNew(scalar(1) - a*phiS);
     epsNew.correctBoundaryConditions();
 
     // d(eps)/dt + div(eps U) with eps U = U - alpha phi U, the powder part
     // through the MULES flux alphaPhi so a constant phi gives div(phi) only.
-    const dimensionedScalar dt = mesh_.time().deltaT();
     const volScalarField source
     (
         (epsNew - eps_)/dt + fvc::div(phi) - fvc::div(alphaPhi*fvc::interpolate(phiS))
@@ -179,6 +209,7 @@ void AirPercolation::solve
     pEqn.solve();
 
     eps_ = epsNew;
+    packing_ = phiS;
 }
 
 tmp<surfaceScalarField> AirPercolation::faceForce() const
