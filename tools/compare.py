@@ -215,12 +215,14 @@ DRY_OF = {"cg-dem-cfd": "cg-dem", "continuum": "continuum", "dem-cfd": "dem-cfd"
 
 def add_crewdson(rows, rho_b):
     """Crewdson's estimate for each run with air, from the dry run of the matching
-    level in the same results folder: W_dry sqrt(1 + (dp/dz)/(rho_b g)), to set
-    beside the run's own W (does the outlet gradient explain the slow-down?)."""
+    level in the same results folder (else the dry run with the same model
+    description): W_dry sqrt(1 + (dp/dz)/(rho_b g)), to set beside the run's
+    own W (does the outlet gradient explain the slow-down?)."""
     for r in rows:
         if r["air"] and r.get("outlet_dpdz_Pa_m") is not None and r["level"] in DRY_OF:
-            dry = [x for x in rows if x["level"] == DRY_OF[r["level"]] and not x["air"]
-                   and x.get("group") == r.get("group")]
+            cands = [x for x in rows if x["level"] == DRY_OF[r["level"]] and not x["air"]]
+            dry = [x for x in cands if x.get("group") == r.get("group")] or \
+                  [x for x in cands if x["model"] == r["model"]]
             if dry:
                 r["crewdson_kg_s"] = cf.crewdson(dry[0]["steady_mass_flow_kg_s"], r["outlet_dpdz_Pa_m"], rho_b)
 
