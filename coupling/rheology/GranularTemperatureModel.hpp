@@ -29,7 +29,7 @@
 //   rhoP    [kg/m3]  particle (material) density, > 0     (required; lactose 1060)
 //   etaMax  [Pa s]   viscosity cap, > 0                   (default 1e5, as muI)
 //   TMin    [m2/s2]  floor of T, > 0                      (default 1e-12: fluctuation
-//                    velocity 1 um/s; at p >~ 20 Pa the cap, not TMin, then sets eta)
+//                    velocity 1 um/s; at p >~ 10 Pa the cap (1e3 Pa s), not TMin, then sets eta)
 #pragma once
 #include "rheology/LatzSchmidt.hpp"
 
