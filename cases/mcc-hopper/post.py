@@ -3,6 +3,8 @@
 
 Usage: post.py RUN_DIR OUT_DIR [--steady-from T] [--check] [--label TEXT]
                [--model TEXT --wall-s S --cores N]
+               [--bulk-density RHO --particle-diameter D --material TEXT]
+               [--temperature-floor TMIN]
 
 Reads RUN_DIR/postProcessing/timeSeries.csv (written by granairContinuumFoam,
 cfd-side/continuum/PowderBalance.H) and writes
@@ -13,7 +15,7 @@ cfd-side/continuum/PowderBalance.H) and writes
                           a step-to-step oscillation that this removes)
   OUT_DIR/mass_flow.png   that flow against time with the Beverloo band
   OUT_DIR/summary.txt     key = value lines (steady mass flow, balance error, ...)
-  OUT_DIR/level.json      this run as the continuum level of `./granair compare`
+  OUT_DIR/level.json      (unless --no-level-json) this run as the continuum level of `./granair compare`
                           (docs/fidelity-levels.md); with air, mass_flow.csv and
                           level.json also carry the outlet air pressure gradient
 
@@ -29,13 +31,20 @@ The steady mass flow is the slope of the discharged outlet mass over
     solver's own mass_balance_error column (all boundaries) too;
   - the initial powder mass is the 1000 g fill of Remmelgas et al. within
     0.5 % (the fill is set by cases/mcc-hopper/mesh.py);
-  - the steady mass flow is > 0.
+  - the steady mass flow is > 0;
+  - with --temperature-floor TMIN (rheology latzSchmidt, ASCII fields): every
+    written granular temperature T (all time directories > 0, serial or
+    processor*/) is finite and >= TMIN (to the 10 written digits).
+--bulk-density and --particle-diameter (default MCC: 900 kg/m3, 660 um) set
+the Beverloo band; the fill is 1000 g whatever the density (mesh.py).
 """
 import argparse
 import csv
+import glob
 import json
 import math
 import os
+import re
 import sys
 
 # Beverloo et al. (1961), circular orifice: W = C rho_b sqrt(g) (D - k d)^2.5
@@ -50,8 +59,35 @@ TOLERANCE = 0.005    # mass balance and fill, relative
 WINDOW = 0.01        # s, averaging window of mass_flow.csv
 
 
-def beverloo(k):
-    return C_BEVERLOO * RHO_BULK * math.sqrt(G) * (D_OUTLET - k * D_PARTICLE) ** 2.5
+def beverloo(k, rho_bulk=RHO_BULK, d_particle=D_PARTICLE):
+    return C_BEVERLOO * rho_bulk * math.sqrt(G) * (D_OUTLET - k * d_particle) ** 2.5
+
+
+def temperature_values(run):
+    """All cell values of the written granular temperature fields T (ASCII) of RUN, time > 0."""
+    dirs = [run] + sorted(d for d in glob.glob(os.path.join(run, "processor*")) if os.path.isdir(d))
+    values, files = [], []
+    for base in dirs:
+        for path in glob.glob(os.path.join(base, "*", "T")):
+            try:
+                if float(os.path.basename(os.path.dirname(path))) <= 0:
+                    continue
+            except ValueError:
+                continue
+            text = open(path).read()
+            m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+            if m:
+                values.append(float(m.group(1)))
+            else:
+                m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\((.*?)\)\s*;", text, re.S)
+                if not m:
+                    sys.exit(f"post.py: cannot read the internalField of {path} (expected ASCII)")
+                cells = [float(v) for v in m.group(2).split()]
+                if len(cells) != int(m.group(1)):
+                    sys.exit(f"post.py: {path} lists {len(cells)} values, header says {m.group(1)}")
+                values += cells
+            files.append(path)
+    return values, files
 
 
 def read_series(path):
@@ -81,6 +117,14 @@ def main():
     ap.add_argument("--model", default="mu(I)", help="level.json: short description of the run")
     ap.add_argument("--wall-s", type=float, default=float("nan"), help="level.json: wall time of the run [s]")
     ap.add_argument("--cores", type=int, default=1, help="level.json: MPI ranks of the run")
+    ap.add_argument("--bulk-density", type=float, default=RHO_BULK, help="Beverloo: bulk density [kg/m3]")
+    ap.add_argument("--particle-diameter", type=float, default=D_PARTICLE, help="Beverloo: particle diameter [m]")
+    ap.add_argument("--material", default="MCC", help="plot title: the material of the run")
+    ap.add_argument("--temperature-floor", type=float, default=None,
+                    help="latzSchmidt: check T >= this floor [m2/s2] in every written field")
+    ap.add_argument("--no-level-json", action="store_true",
+                    help="write no level.json (Allrun --rheology latzSchmidt: another material's closure on this "
+                         "geometry is a solver test, not a level of the MCC comparison)")
     args = ap.parse_args()
 
     s = read_series(os.path.join(args.run, "postProcessing", "timeSeries.csv"))
@@ -122,7 +166,9 @@ def main():
                          / max(1, sum(1 for a in win_t if a >= args.steady_from)))
     else:
         w_steady, w_sd = float("nan"), float("nan")
-    bev_hi, bev_lo = beverloo(K_RANGE[0]), beverloo(K_RANGE[1])
+    bev_hi = beverloo(K_RANGE[0], args.bulk_density, args.particle_diameter)
+    bev_lo = beverloo(K_RANGE[1], args.bulk_density, args.particle_diameter)
+    t_values, t_files = temperature_values(args.run) if args.temperature_floor is not None else ([], [])
 
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "mass_flow.csv"), "w", newline="") as fh:
@@ -134,12 +180,13 @@ def main():
     if dpdz is not None:
         sel = [(t[j] - (t[j - 1] if j > 0 else 0.0), dpdz[j]) for j in range(len(t)) if t[j] >= args.steady_from]
         dpdz_steady = sum(a * b for a, b in sel) / sum(a for a, _ in sel) if sel else float("nan")
-    with open(os.path.join(args.out, "level.json"), "w") as fh:
-        json.dump({"case": "mcc-hopper", "level": "continuum", "model": args.model, "b_mm": D_OUTLET * 1e3,
-                   "air": dpdz is not None, "steady_mass_flow_kg_s": w_steady,
-                   "steady_window_s": [args.steady_from, t[-1]], "outlet_dpdz_Pa_m": dpdz_steady,
-                   "wall_time_s": args.wall_s, "cores": args.cores, "timeseries": "mass_flow.csv"},
-                  fh, indent=1)
+    if not args.no_level_json:
+        with open(os.path.join(args.out, "level.json"), "w") as fh:
+            json.dump({"case": "mcc-hopper", "level": "continuum", "model": args.model, "b_mm": D_OUTLET * 1e3,
+                       "air": dpdz is not None, "steady_mass_flow_kg_s": w_steady,
+                       "steady_window_s": [args.steady_from, t[-1]], "outlet_dpdz_Pa_m": dpdz_steady,
+                       "wall_time_s": args.wall_s, "cores": args.cores, "timeseries": "mass_flow.csv"},
+                      fh, indent=1)
     summary = {
         "t_end_s": t[-1],
         "steady_from_s": args.steady_from,
@@ -156,6 +203,12 @@ def main():
         "solver_mass_balance_error_max": solver_balance,
         "all_finite": int(finite),
     }
+    if args.temperature_floor is not None:
+        summary.update({
+            "temperature_fields": len(t_files),
+            "temperature_min_m2_s2": min(t_values) if t_values else float("nan"),
+            "temperature_max_m2_s2": max(t_values) if t_values else float("nan"),
+        })
     with open(os.path.join(args.out, "summary.txt"), "w") as fh:
         for k, v in summary.items():
             fh.write(f"{k} = {v:.6g}\n" if isinstance(v, float) else f"{k} = {v}\n")
@@ -177,7 +230,7 @@ def main():
         ax.set_xlabel("t [s]")
         ax.set_ylabel("powder mass flow [kg/s]")
         ax.set_ylim(0, max(1.3 * bev_hi, 1.1 * max(win_w + [0.0])))
-        ax.set_title("MCC hopper, D_o = 25 mm, 1000 g fill (Remmelgas et al. 2019)")
+        ax.set_title(f"{args.material}, D_o = 25 mm, 1000 g fill", fontsize=9)
         ax.legend(loc="upper right", fontsize=8)
         fig.tight_layout()
         fig.savefig(os.path.join(args.out, "mass_flow.png"), dpi=120)
@@ -196,11 +249,22 @@ def main():
             failures.append(f"initial powder {initial:.6g} kg differs from the {FILL_MASS} kg fill by {fill_error:.3e}")
         if not w_steady > 0:
             failures.append(f"steady mass flow {w_steady} kg/s is not > 0")
+        if args.temperature_floor is not None:
+            # Written with 10 significant digits: allow that rounding below the floor.
+            floor = args.temperature_floor * (1 - 1e-9)
+            if not t_files:
+                failures.append("no granular temperature field T written (time > 0)")
+            elif not all(math.isfinite(v) and v >= floor for v in t_values):
+                bad = [v for v in t_values if not (math.isfinite(v) and v >= floor)]
+                failures.append(f"{len(bad)} granular temperature values not finite or below "
+                                f"{args.temperature_floor} m2/s2, e.g. {bad[0]}")
         if failures:
             print("mcc-hopper check FAILED: " + "; ".join(failures), file=sys.stderr)
             sys.exit(1)
         print(f"mcc-hopper check passed: |balance| {abs(balance):.2e} <= {TOLERANCE}, fill {fill_error:.2e}, "
-              f"steady mass flow {w_steady:.4g} kg/s > 0")
+              f"steady mass flow {w_steady:.4g} kg/s > 0"
+              + (f", T in [{min(t_values):.3g}, {max(t_values):.3g}] m2/s2 >= {args.temperature_floor:g} "
+                 f"({len(t_files)} fields)" if args.temperature_floor is not None else ""))
 
 
 if __name__ == "__main__":

@@ -7,6 +7,7 @@
 
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
+#include "rheology/LatzSchmidt.hpp"
 #include "rheology/ShearRate.hpp"
 #include "zeroGradientFvPatchFields.H"
 
@@ -33,6 +34,8 @@ volScalarField derivedField(const fvMesh& mesh, const word& name, const dimensio
     );
 }
 
+// The rheology as a pressure/shear-rate one, or null if it is latzSchmidt (the
+// solver transports its temperature); any other kind is refused by name.
 const ::granair::ViscoplasticRheology* viscoplastic
 (
     const ::granair::Rheology& r,
@@ -40,15 +43,15 @@ const ::granair::ViscoplasticRheology* viscoplastic
 )
 {
     const auto* v = dynamic_cast<const ::granair::ViscoplasticRheology*>(&r);
-    if (!v)
+    if (!v && r.name() != ::granair::LatzSchmidt::typeName)
     {
         std::string needs;
         for (const auto& in : r.inputs()) needs += " " + in;
         ::granair::fail<::granair::InputError>
         (
             dict.where("type"), ": rheology '", r.name(), "' needs the state (", needs,
-            " ), but granairContinuumFoam provides only the pressure p and the shear rate gammaDot; ",
-            "use a pressure/shear-rate rheology (muI)"
+            " ), but granairContinuumFoam provides only the pressure p and the shear rate gammaDot, ",
+            "or the granular temperature of latzSchmidt; use muI or latzSchmidt"
         );
     }
     return v;
@@ -60,7 +63,11 @@ GranularMixture::GranularMixture(const fvMesh& mesh, const ::granair::Dictionary
 :
     mesh_(mesh),
     rheologyOwner_(::granair::rheologies().create(properties.subDict("rheology"))),
-    rheology_(viscoplastic(*rheologyOwner_, properties.subDict("rheology"))),
+    viscoplastic_(viscoplastic(*rheologyOwner_, properties.subDict("rheology"))),
+    temperature_
+    (
+        viscoplastic_ ? nullptr : std::make_unique<GranularTemperature>(mesh, properties.subDict("rheology"))
+    ),
     rhoPowder_(properties.subDict("powder").getDouble("rho", 1e-3, 1e5)),
     rhoAir_(properties.subDict("air").getDouble("rho", 1e-6, 1e4)),
     muAir_(properties.subDict("air").getDouble("mu", 1e-9, 1e3)),
@@ -78,7 +85,7 @@ GranularMixture::GranularMixture(const fvMesh& mesh, const ::granair::Dictionary
     ),
     eta_(derivedField(mesh, "eta", dimDynamicViscosity, true)),
     mu_(derivedField(mesh, "muMixture", dimDynamicViscosity, true)),
-    I_(derivedField(mesh, "I", dimless, true)),
+    I_(derivedField(mesh, "I", dimless, viscoplastic_ != nullptr)),
     gammaDot_(derivedField(mesh, "gammaDot", dimless/dimTime, true)),
     phiSolid_(derivedField(mesh, "phiSolid", dimless, true))
 {
@@ -90,11 +97,18 @@ GranularMixture::GranularMixture(const fvMesh& mesh, const ::granair::Dictionary
         );
     }
     rho_.oldTime();
-    // Before the first step: the powder at rest, viscosity at the cap.
-    mu_ = alpha_*dimensionedScalar("etaRest", dimDynamicViscosity, rheology_->viscosity(0, 0))
+    // Before the first step: the powder at rest, viscosity at the cap (both
+    // rheologies reach it at rest: gammaDot -> 0, or T at its floor), and the
+    // solid fraction of the powder at rest (latzSchmidt: c0, the packed
+    // state; replaced by c(p, T) in the first correctViscosity).
+    const scalar etaRest =
+        viscoplastic_ ? viscoplastic_->viscosity(0, 0) : temperature_->model().parameters().etaMax;
+    const scalar phiRest =
+        viscoplastic_ ? viscoplastic_->solidFraction(0, 0) : temperature_->model().closure().parameters().c0;
+    mu_ = alpha_*dimensionedScalar("etaRest", dimDynamicViscosity, etaRest)
         + (scalar(1) - alpha_)*dimensionedScalar("muAir", dimDynamicViscosity, muAir_);
     mu_.correctBoundaryConditions();
-    phiSolid_ = dimensionedScalar("phiRest", dimless, rheology_->solidFraction(0, 0));
+    phiSolid_ = dimensionedScalar("phiRest", dimless, phiRest);
     phiSolid_.correctBoundaryConditions();
 }
 
@@ -104,7 +118,12 @@ void GranularMixture::correctDensity()
     rho_ == a*dimensionedScalar("rhoPowder", dimDensity, rhoPowder_) + (scalar(1) - a)*dimensionedScalar("rhoAir", dimDensity, rhoAir_);
 }
 
-void GranularMixture::correctViscosity(const volVectorField& U, const volScalarField& p)
+void GranularMixture::correctViscosity
+(
+    const volVectorField& U,
+    const surfaceScalarField& phiFlux,
+    const volScalarField& p
+)
 {
     const volTensorField gradU(fvc::grad(U));
     const scalarField& alpha = alpha_.primitiveField();
@@ -115,21 +134,40 @@ void GranularMixture::correctViscosity(const volVectorField& U, const volScalarF
     scalarField& gd = gammaDot_.primitiveFieldRef();
     scalarField& phi = phiSolid_.primitiveFieldRef();
 
+    forAll(gd, celli)
+    {
+        const tensor& g = gradU[celli];
+        Eigen::Matrix3d m;
+        m << g.xx(), g.xy(), g.xz(), g.yx(), g.yy(), g.yz(), g.zx(), g.zy(), g.zz();
+        gd[celli] = ::granair::shearRate(m);
+    }
+    if (temperature_)
+    {
+        // T at the latest U and p first; collective, raises on all ranks.
+        temperature_->solve(alpha_, phiFlux, p, gd);
+    }
+
     std::string error;
     try
     {
         forAll(eta, celli)
         {
-            const tensor& g = gradU[celli];
-            Eigen::Matrix3d m;
-            m << g.xx(), g.xy(), g.xz(), g.yx(), g.yy(), g.yz(), g.zx(), g.zy(), g.zz();
-            gd[celli] = ::granair::shearRate(m);
             try
             {
-                const scalar etaNew = rheology_->viscosity(pc[celli], gd[celli]);
+                scalar etaNew;
+                if (viscoplastic_)
+                {
+                    etaNew = viscoplastic_->viscosity(pc[celli], gd[celli]);
+                    I[celli] = viscoplastic_->inertialNumber(pc[celli], gd[celli]);
+                    phi[celli] = viscoplastic_->solidFraction(pc[celli], gd[celli]);
+                }
+                else
+                {
+                    const auto cell = temperature_->cell(celli, pc[celli], gd[celli]);
+                    etaNew = cell.eta;
+                    phi[celli] = cell.c;
+                }
                 eta[celli] = relax_*etaNew + (1 - relax_)*eta[celli];
-                I[celli] = rheology_->inertialNumber(pc[celli], gd[celli]);
-                phi[celli] = rheology_->solidFraction(pc[celli], gd[celli]);
             }
             catch (const ::granair::InputError& e)
             {

@@ -5,7 +5,9 @@ Description
     Continuum granular flow of a powder with air: two incompressible phases
     (powder at its bulk density, air) with one velocity and a VOF interface,
     as Remmelgas et al. (2019) did with interFoam. The powder's viscosity
-    comes from a granular rheology (mu(I): coupling/rheology/MuI.hpp), the
+    comes from a granular rheology (mu(I): coupling/rheology/MuI.hpp, or the
+    kinetic latzSchmidt closure with a transported granular temperature T:
+    GranularTemperature.H), the
     air's drag on the powder optionally from Darcy-Ergun percolation of the
     pore air (AirPercolation.H). docs/continuum-model.md describes the model.
 
@@ -22,8 +24,8 @@ Files
     constant/granularProperties (GranularMixture.H, AirPercolation.H, and
         outletPatch <name>;  the patch the discharge goes through, default outlet),
     constant/g, optional constant/hRef,
-    0/U, 0/p_rgh, 0/alpha.powder, 0/p_air (darcyErgun),
-    system/fvSolution: solvers { alpha.powder p_rgh p_rghFinal U p_air },
+    0/U, 0/p_rgh, 0/alpha.powder, 0/p_air (darcyErgun), 0/T (latzSchmidt),
+    system/fvSolution: solvers { alpha.powder p_rgh p_rghFinal U p_air T },
         PIMPLE { nOuterCorrectors nCorrectors nNonOrthogonalCorrectors momentumPredictor },
     system/controlDict: adjustTimeStep, maxCo, maxAlphaCo, maxDeltaT.
     Output: postProcessing/timeSeries.csv (PowderBalance.H), time directories.
@@ -88,7 +90,7 @@ void adjustDeltaT(Time& runTime, scalar co, scalar alphaCo)
 int main(int argc, char* argv[])
 {
     Foam::granair::ensureFoamRuntime();
-    argList::addNote("continuum granular flow (mu(I)) of a powder with air: VOF mixture, optional Darcy-Ergun air drag");
+    argList::addNote("continuum granular flow (mu(I) or latzSchmidt) of a powder with air: VOF mixture, optional Darcy-Ergun air drag");
     #include "setRootCase.H"
     Foam::granair::MpiSession mpi(argc, argv);
     #include "createTime.H"
@@ -190,7 +192,7 @@ int main(int argc, char* argv[])
                 // The viscosity at the latest U and p in every outer corrector, so
                 // nOuterCorrectors > 1 converges the rheology with the pressure
                 // (with 1 corrector it lags one step, as interFoam's).
-                mixture.correctViscosity(U, p);
+                mixture.correctViscosity(U, phi, p);
                 if (pimple.firstIter())
                 {
                     air.solve(mixture, alphaPhi, phi);
@@ -272,7 +274,13 @@ int main(int argc, char* argv[])
             Info<< "powder: mass flow " << balance.lastMassFlow() << " kg/s, discharged " << balance.discharged()
                 << " kg, in domain " << balance.powderMass(alpha) << " kg, balance error "
                 << balance.relativeBalanceError(alpha) << ", alpha in [" << gMin(alpha.primitiveField()) << ", "
-                << gMax(alpha.primitiveField()) << "]" << nl << endl;
+                << gMax(alpha.primitiveField()) << "]" << endl;
+            if (const auto* temperature = mixture.temperature())
+            {
+                Info<< "granular temperature T in [" << gMin(temperature->T().primitiveField()) << ", "
+                    << gMax(temperature->T().primitiveField()) << "] m2/s2" << endl;
+            }
+            Info<< endl;
 
             runTime.write();
             runTime.printExecutionTime(Info);

@@ -68,4 +68,29 @@ std::vector<double> LatzSchmidt::evaluate(const GranularState& s) const {
 
 double LatzSchmidt::tanFrictionAngle() const { return std::sqrt(p_.eta0 * p_.eps0); }
 
+double LatzSchmidt::solidFraction(double q, double T) const {
+    if (!std::isfinite(q))
+        fail<InputError>("rheology latzSchmidt: pressure per particle density q = ", q,
+                         " m2/s2, expected a finite number");
+    if (!(T > 0 && std::isfinite(T)))
+        fail<InputError>("rheology latzSchmidt: granular temperature T = ", T,
+                         " m2/s2, expected a finite T > 0 to invert the equation of state");
+    if (q <= 0) return 0.0;
+    const double gc0 = 1.0 / (1.0 - p_.c0 / p_.cMax);
+    const double q0 = p_.c0 * T * gc0;  // pressure at c = c0 (p_y = 0 there)
+    double c = q <= q0 ? q / (T + q / p_.cMax) : (q + p_.T0 * p_.c0) / (T + p_.T0 + q / p_.cMax);
+    // Both forms are < cMax in exact arithmetic; keep that after rounding.
+    if (!(c < p_.cMax)) c = std::nextafter(p_.cMax, 0.0);
+    return c;
+}
+
+double LatzSchmidt::steadyShearTemperature(double c, double gammaDot) const {
+    if (!(c > 0 && c < p_.cMax))
+        fail<InputError>("rheology latzSchmidt: steady shear needs 0 < c < cMax = ", p_.cMax, ", got c = ", c);
+    if (!(gammaDot > 0 && std::isfinite(gammaDot)))
+        fail<InputError>("rheology latzSchmidt: steady shear needs a finite shear rate > 0, got ", gammaDot, " 1/s");
+    const double gc = 1.0 / (1.0 - c / p_.cMax);
+    return p_.eta0 * gammaDot * gammaDot / (p_.eps0 * gc);
+}
+
 }  // namespace granair

@@ -83,6 +83,26 @@ public:
     Values values(double c, double T) const;
     double tanFrictionAngle() const;  // sqrt(eta0 eps0) [-]
 
+    // The equation of state inverted for c: the solid fraction in [0, cMax)
+    // at which p(c, T) = q, for q = p/rho_p [m2/s2] and T > 0 [m2/s2].
+    // Multiplying p(c, T) = q by (1 - c/cMax) leaves an equation linear in c
+    // on each side of c0, so the root is exact (no iteration):
+    //     q <= q0 = c0 T g_c(c0):  c = q / (T + q/cMax)
+    //     q >  q0:                 c = (q + T0 c0) / (T + T0 + q/cMax)
+    // p is strictly increasing in c (c g_c and (c - c0) g_c both are), so the
+    // root is unique. q <= 0 gives c = 0 (no tension: a powder at zero or
+    // negative pressure is not packed). For very large q the second form
+    // rounds to cMax; the result is then the largest double below cMax.
+    // Throws InputError for a non-finite q or T <= 0.
+    double solidFraction(double q, double T) const;
+
+    // Homogeneous simple shear at fixed c: the temperature T* at which the
+    // viscous heating eta gammaDot^2 balances the dissipation eps_r p_k,
+    //     T* = eta0 gammaDot^2 / (eps0 g_c)      [m2/s2],
+    // where the shear stress over the pressure is eta gammaDot / p = sqrt(eta0 eps0).
+    // Requires 0 < c < cMax and gammaDot > 0.
+    double steadyShearTemperature(double c, double gammaDot) const;
+
     const Parameters& parameters() const { return p_; }
 
 private:

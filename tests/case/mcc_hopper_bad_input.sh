@@ -33,10 +33,18 @@ check "$d" "granularProperties', key 'powder.rho': missing" || fails=$((fails+1)
 d=$(variant unknown_rheology); sed -i 's/type        muI;/type        muJ;/' "$d/$props"
 check "$d" "key 'rheology.type': unknown rheology 'muJ'.*" || fails=$((fails+1))
 
-# latzSchmidt is registered but needs the granular temperature: refused by name.
-d=$(variant kinetic_rheology)
-sed -i 's/type        muI;/type latzSchmidt; c0 0.5579; cMax 0.5771; T0 0.41; eta0 0.00052; lambda0 0.001; eps0 332.84;/' "$d/$props"
-check "$d" "rheology 'latzSchmidt' needs the state.*use a pressure/shear-rate rheology" || fails=$((fails+1))
+# latzSchmidt transports the granular temperature: without 0/T it stops naming
+# the file; without the particle density it names the key.
+latz='type latzSchmidt; c0 0.5579; cMax 0.5771; T0 0.41; eta0 0.00052; lambda0 0.001; eps0 332.84;'
+d=$(variant latz_missing_T)
+sed -i "s/type        muI;/$latz/" "$d/$props"   # rhoP: the muI block's line
+check "$d" "rheology 'latzSchmidt' transports the granular temperature, but its field file '.*0/T' is missing" \
+  || fails=$((fails+1))
+
+d=$(variant latz_missing_rhoP)
+sed -i "s/type        muI;/$latz/" "$d/$props"; sed -i '/rhoP/d' "$d/$props"
+cp "$case_dir/latzSchmidt/0/T" "$d/0/T"
+check "$d" "granularProperties', key 'rheology.rhoP': missing" || fails=$((fails+1))
 
 d=$(variant negative_cap); sed -i "s/^\( *etaMax *\)[^;]*;/\1-1;/" "$d/$props"
 check "$d" "granularProperties.*etaMax = -1" || fails=$((fails+1))
