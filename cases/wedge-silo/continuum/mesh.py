@@ -53,16 +53,20 @@ JOP_MU_SPAN = math.tan(math.radians(32.76)) - math.tan(math.radians(20.9))
 JOP_I0 = 0.279
 D_LACTOSE = 225e-6       # particle diameter of the rheology and of the Ergun drag [m]
 # Dilatancy phi(I) = phi_max - (phi_max - phi_min) I: phi_max the settled DEM
-# solid fraction rho_b/rho_p; slope phi_max - phi_min = 0.189 as measured for
-# MCC spheres (Remmelgas et al. 2019, cases.md section B), close to the ~0.2
-# reported for glass beads (Pouliquen et al. 2006). Not measured for lactose.
-DILATANCY_SPAN = 0.632 - 0.443
+# solid fraction rho_b/rho_p. The span is not measured for lactose. The MCC
+# value 0.189 (Remmelgas et al. 2019, cases.md B; glass beads ~0.2) made the
+# b = 10 and 15 mm air runs blow up within 0.04 s (README). 0.05 is of the
+# order of the dilation the DEM-CFD demo implies at the slot: Darcy slip
+# (eps^2/K)|dp/dz| ~ 4e-6 m2/(Pa s) x 3000 Pa/m ~ 0.012 m/s against a powder
+# speed W/(rho_b b L) ~ 0.3 m/s, i.e. a change of solid fraction ~0.04.
+DILATANCY_SPAN = 0.05
 
 
 def fit_mu_s():
     """Least-squares line tau = c + mu_s sigma through the shear-test points:
     (mu_s, c [kPa]). The slope is the friction coefficient of the yield locus;
-    the intercept c (cohesion, ~10 Pa) has no place in mu(I) and is dropped."""
+    the intercept c (cohesion, ~10 Pa) has no place in mu(I); it only sets
+    the pressure floor pMin = c/mu_s (the tensile strength of the locus)."""
     n = len(SHEAR_TEST)
     ms = sum(s for s, _ in SHEAR_TEST) / n
     mt = sum(t for _, t in SHEAR_TEST) / n
@@ -88,6 +92,9 @@ class Silo:
         self.mu_2 = self.mu_s + JOP_MU_SPAN
         self.phi_max = self.rho_b / mc.RHO_P
         self.phi_min = self.phi_max - DILATANCY_SPAN
+        # pressure floor of mu(I): the tensile strength c/mu_s of the fitted
+        # cohesive yield locus (where tau = c + mu_s sigma meets tau = 0)
+        self.p_min = self.cohesion_kPa * 1e3 / self.mu_s
         # hopper: cells about square, width w(z) = (b + 2 z tan)/N, so the
         # heights grow geometrically by q = 1 + 2 tan/N per cell.
         q = 1 + 2 * math.tan(self.theta) / n
@@ -114,7 +121,8 @@ class Silo:
                     nz_shaft=self.nz_shaft, hopper_height_m=self.hopper_height,
                     fill_height_m=self.fill_height, rho_b=self.rho_b, fill_mass_kg=self.fill_mass(),
                     mu_s=self.mu_s, shear_test_cohesion_kPa=self.cohesion_kPa, mu_2=self.mu_2,
-                    I0=JOP_I0, d=D_LACTOSE, rho_p=mc.RHO_P, phi_max=self.phi_max, phi_min=self.phi_min)
+                    I0=JOP_I0, d=D_LACTOSE, rho_p=mc.RHO_P, phi_max=self.phi_max, phi_min=self.phi_min,
+                    p_min_Pa=self.p_min)
 
 
 def block_mesh_dict(s):
@@ -194,15 +202,15 @@ air
 rheology
 {{
     type        muI;
-    muS         {s.mu_s:.4f};       // slope of the shear-test yield locus (cases.md A; cohesion {s.cohesion_kPa * 1e3:.1f} Pa dropped)
+    muS         {s.mu_s:.4f};       // slope of the shear-test yield locus (cases.md A; cohesion c = {s.cohesion_kPa * 1e3:.1f} Pa: see pMin)
     mu2         {s.mu_2:.4f};       // mu_s + 0.2616, the span of Jop et al. (2006) glass beads (assumed)
     I0          {JOP_I0:g};          // Jop et al. (2006) glass beads (assumed)
     d           {D_LACTOSE:g};       // [m]
     rhoP        {mc.RHO_P:g};          // particle density [kg/m3]
     phiMax      {s.phi_max:.4f};       // settled DEM solid fraction rho_b/rho_p
-    phiMin      {s.phi_min:.4f};       // phiMax - 0.189 (MCC slope, Remmelgas et al. 2019; assumed)
+    phiMin      {s.phi_min:.4f};       // phiMax - {DILATANCY_SPAN:g} (assumed; mesh.py and README say why)
     etaMax      1e3;            // viscosity cap [Pa s] (cases/mcc-hopper README: 1e4 unstable)
-    pMin        1;              // pressure floor [Pa]
+    pMin        {s.p_min:.4g};          // pressure floor [Pa]: tensile strength c/mu_s of the shear-test fit
     gammaDotMin 1e-6;           // shear-rate floor [1/s]
     regularisation none;
 }}

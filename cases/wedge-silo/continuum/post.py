@@ -67,14 +67,15 @@ def read_series(run_dir):
 
 def window_means(t, dt, values, width):
     """Time means of per-step values over consecutive windows of `width` s:
-    (window centres, means). Step i covers (t[i] - dt[i], t[i]]."""
+    (window centres, means). Step i covers (t[i] - dt[i], t[i]]. A last window
+    shorter than width/2 is dropped."""
     centres, means = [], []
     start, acc, span = 0.0, np.zeros(len(values)), 0.0
     for i in range(len(t)):
         acc += np.array([v[i] for v in values]) * dt[i]
         span += dt[i]
         if t[i] >= start + width or i == len(t) - 1:
-            if span > 0:
+            if span > 0.5 * width:   # a last, shorter window of a few steps is left out
                 centres.append(start + 0.5 * span)
                 means.append(acc / span)
             start, acc, span = t[i], np.zeros(len(values)), 0.0
@@ -119,14 +120,16 @@ def plot_fields(run_dir, silo, name, path):
     ztop = (silo["fill_height_m"] + 0.02) * 1e3
     for j, (t, d) in enumerate(picks):
         a = read_internal(os.path.join(d, "alpha.powder"), n)
-        sc = axes[0][j].scatter(cx, cz, c=a, s=6, marker="s", cmap="viridis", vmin=0, vmax=1)
+        sc = axes[0][j].scatter(cx, cz, c=a, s=9, marker="s", cmap="viridis", vmin=0, vmax=1)
         axes[0][j].set_title(f"t = {t:.3g} s", fontsize=9)
         if air:
             pa_path = os.path.join(d, "p_air")
             pa = read_internal(pa_path, n) if os.path.exists(pa_path) else np.zeros(n)
             lim = max(1.0, float(np.percentile(np.abs(pa), 99)))
-            sp = axes[1][j].scatter(cx, cz, c=pa, s=6, marker="s", cmap="RdBu_r", vmin=-lim, vmax=lim)
+            sp = axes[1][j].scatter(cx, cz, c=pa, s=9, marker="s", cmap="RdBu_r", vmin=-lim, vmax=lim)
             fig.colorbar(sp, ax=axes[1][j], fraction=0.08, label="air pressure - ambient [Pa]")
+            if j > 0:
+                axes[1][j].set_title("last step: p_air alternates in\nsign step to step (README)", fontsize=7)
     fig.colorbar(sc, ax=list(axes[0]), fraction=0.05, label="powder fraction alpha")
     for ax in axes.flat:
         ax.set_xlim(-22.5, 22.5)
@@ -160,9 +163,12 @@ def post_run(a):
     t0 = min(STEADY_FROM, 0.5 * t1)
     sel = (t >= t0) & (t <= t1)
     w_steady = float(np.polyfit(t[sel], out_mass[sel], 1)[0]) if sel.sum() >= 3 else float("nan")
-    dpdz = pmin = None
+    dpdz = pmin = dpdz_sd = None
     if air:
         dpdz = float(np.sum(s["outlet_dpdz_Pa_m"][sel] * dt[sel]) / np.sum(dt[sel]))
+        # spread of the per-step values about that mean (they alternate in sign
+        # from step to step: README, "Continuum fidelity")
+        dpdz_sd = float(np.sqrt(np.sum((s["outlet_dpdz_Pa_m"][sel] - dpdz) ** 2 * dt[sel]) / np.sum(dt[sel])))
         pmin = float(np.sum(s["air_p_min_Pa"][sel] * dt[sel]) / np.sum(dt[sel]))
 
     os.makedirs(a.out_dir, exist_ok=True)
@@ -184,10 +190,16 @@ def post_run(a):
     with open(os.path.join(a.out_dir, "level.json"), "w") as fh:
         json.dump(level, fh, indent=1)
         fh.write("\n")
-    extra = dict(initial_powder_kg=initial, final_powder_kg=float(s["powder_mass_kg"][-1]),
+    cpu = None
+    log = os.path.join(a.run_dir, "log", "granairContinuumFoam.log")
+    if os.path.exists(log):
+        with open(log) as fh:
+            found = re.findall(r"ExecutionTime = ([\d.eE+-]+) s", fh.read())
+        cpu = float(found[-1]) if found else None
+    extra = dict(initial_powder_kg=initial, solver_cpu_time_s=cpu, final_powder_kg=float(s["powder_mass_kg"][-1]),
                  discharged_outlet_kg=float(out_mass[-1]), mass_balance_error=float(balance),
                  solver_mass_balance_error_max=solver_balance, t_end_s=float(t[-1]), steps=len(t),
-                 air_p_min_window_mean_Pa=pmin, all_finite=bool(finite))
+                 air_p_min_window_mean_Pa=pmin, outlet_dpdz_step_sd_Pa_m=dpdz_sd, all_finite=bool(finite))
     with open(os.path.join(a.out_dir, "details.json"), "w") as fh:
         json.dump(extra, fh, indent=1)
         fh.write("\n")
@@ -232,6 +244,8 @@ def summary(a):
         with open(path) as fh:
             lv = json.load(fh)
         lv["dir"] = os.path.dirname(path)
+        with open(os.path.join(lv["dir"], "details.json")) as fh:
+            lv["details"] = json.load(fh)
         runs.append(lv)
     if not runs:
         sys.exit(f"post.py summary: no */level.json under {a.out_dir}")
@@ -239,12 +253,15 @@ def summary(a):
     dem = dem_rates()
     with open(os.path.join(a.out_dir, "summary.csv"), "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow(["run", "b_mm", "air", "W_kg_s", "outlet_dpdz_Pa_m", "window_t0_s", "window_t1_s",
+        w.writerow(["run", "b_mm", "air", "W_kg_s", "outlet_dpdz_Pa_m", "dpdz_step_sd_Pa_m", "window_t0_s",
+                    "window_t1_s",
                     "W_demo_dem_cfd_kg_s", "W_over_dem", "dpdz_demo_dem_cfd_Pa_m", "wall_time_s"])
         for r in runs:
             wd, pd = dem.get((r["b_mm"], r["air"]), (float("nan"), float("nan")))
             w.writerow([os.path.basename(r["dir"]), r["b_mm"], int(r["air"]), f"{r['steady_mass_flow_kg_s']:.5g}",
                         "" if r["outlet_dpdz_Pa_m"] is None else f"{r['outlet_dpdz_Pa_m']:.5g}",
+                        "" if not r["details"].get("outlet_dpdz_step_sd_Pa_m") else
+                        f"{r['details']['outlet_dpdz_step_sd_Pa_m']:.3g}",
                         f"{r['steady_window_s'][0]:.3g}", f"{r['steady_window_s'][1]:.3g}",
                         f"{wd:.5g}", f"{r['steady_mass_flow_kg_s'] / wd:.3g}", f"{pd:.5g}" if r["air"] else "",
                         f"{r['wall_time_s']:.0f}"])
