@@ -129,7 +129,7 @@ def plot_fields(run_dir, silo, name, path):
             sp = axes[1][j].scatter(cx, cz, c=pa, s=9, marker="s", cmap="RdBu_r", vmin=-lim, vmax=lim)
             fig.colorbar(sp, ax=axes[1][j], fraction=0.08, label="air pressure - ambient [Pa]")
             if j > 0:
-                axes[1][j].set_title("last step: p_air alternates in\nsign step to step (README)", fontsize=7)
+                axes[1][j].set_title("air pressure of the last step", fontsize=8)
     fig.colorbar(sc, ax=list(axes[0]), fraction=0.05, label="powder fraction alpha")
     for ax in axes.flat:
         ax.set_xlim(-22.5, 22.5)
