@@ -181,7 +181,7 @@ def post_run(a):
             w.writerow([f"{c:.6g}"] + [f"{v:.6g}" for v in m])
     model = (f"mu(I) (mu_s {silo['mu_s']:.3f}, mu_2 {silo['mu_2']:.3f}, I0 {silo['I0']:g}), VOF, "
              f"{'free-slip' if silo['walls'] == 'slip' else 'no-slip'} walls, "
-             f"{'Darcy-Ergun air with phi(I) dilatancy' if air else 'no air'}, plane mesh N = {silo['mesh_n']} "
+             f"{'Darcy-Ergun air, packing relaxing to phi(I) (span %.3g)' % (silo['phi_max'] - silo['phi_min']) if air else 'no air'}, plane mesh N = {silo['mesh_n']} "
              f"({silo['cells']} cells), full 60 mm depth")
     level = {"case": "wedge-silo", "level": "continuum", "model": model, "b_mm": silo["b_mm"], "air": air,
              "steady_mass_flow_kg_s": w_steady, "steady_window_s": [t0, t1],
