@@ -8,8 +8,8 @@
 cfd-side/continuum/PowderBalance.H; full 60 mm depth: the mesh is one cell of
 the whole depth) and RUN_DIR/silo.json (mesh.py) and writes into OUT_DIR:
   timeseries.csv  t, mass_flow_kg_s[, outlet_dpdz_Pa_m]: 10 ms means (the
-                  per-step outlet flux and air-pressure gradient oscillate from
-                  step to step; the mean over each window is the time integral
+                  per-step outlet flux can oscillate from step to step, as in
+                  cases/mcc-hopper; the mean over each window is the time integral
                   of the per-step values over the window length); no
                   third column for dry runs
   level.json      the level contract of helper-brief-3 (case wedge-silo,
@@ -166,8 +166,9 @@ def post_run(a):
     dpdz = pmin = dpdz_sd = None
     if air:
         dpdz = float(np.sum(s["outlet_dpdz_Pa_m"][sel] * dt[sel]) / np.sum(dt[sel]))
-        # spread of the per-step values about that mean (they alternate in sign
-        # from step to step: README, "Continuum fidelity")
+        # spread of the per-step values about that mean: a check on step-to-step
+        # noise (before the packing relaxation of AirPercolation they alternated
+        # in sign, README "Continuum fidelity")
         dpdz_sd = float(np.sqrt(np.sum((s["outlet_dpdz_Pa_m"][sel] - dpdz) ** 2 * dt[sel]) / np.sum(dt[sel])))
         pmin = float(np.sum(s["air_p_min_Pa"][sel] * dt[sel]) / np.sum(dt[sel]))
 
