@@ -249,7 +249,11 @@ def plot(rows, band, ratio, out, title):
     def colour_of(r):
         return colour[(DRY_OF.get(r["level"], r["level"]), r.get("group"))]
 
-    fig, ax = plt.subplots(figsize=(8, 4.8))
+    def label_of(r):
+        model = r["model"] if len(r["model"]) <= 48 else r["model"][:46].rstrip(" ,") + "..."
+        return f"{r['level']}, {'air' if r['air'] else 'dry'}: {model}"
+
+    fig, ax = plt.subplots(figsize=(8, 6.4))
     ax.axhspan(band[0], band[1], color="0.85", label="Beverloo band (closed form, dry)")
     ax.axhline(0.5 * (band[0] + band[1]) * ratio, color="0.4", ls="--", lw=1,
                label="Beverloo x Carleton (closed form, air)")
@@ -258,23 +262,23 @@ def plot(rows, band, ratio, out, title):
         if s is None:
             continue
         ax.plot(s["t"], s["mass_flow_kg_s"], lw=1.2, ls="-" if r["air"] else ":", color=colour_of(r),
-                label=f"{r['level']}: {r['model']}, {'air' if r['air'] else 'dry'}")
+                label=label_of(r))
     ax.set_xlabel("t [s]")
     ax.set_ylabel("mass flow [kg/s]")
     ax.set_title(title, fontsize=10)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "mass_flow.png"), dpi=120)
     plt.close(fig)
 
-    fig, ax = plt.subplots(figsize=(8, 4.8))
+    fig, ax = plt.subplots(figsize=(8, 6.0))
     n = 0
     for r in rows:
         s = r.get("series")
         if s is None or not r["air"] or "outlet_dpdz_Pa_m" not in s:
             continue
-        ax.plot(s["t"], s["outlet_dpdz_Pa_m"], lw=1.2, color=colour_of(r), label=f"{r['level']}: {r['model']}")
+        ax.plot(s["t"], s["outlet_dpdz_Pa_m"], lw=1.0, color=colour_of(r), label=label_of(r))
         n += 1
     if n == 0:
         ax.text(0.5, 0.5, "no run with air has an outlet pressure gradient", ha="center",
@@ -283,7 +287,7 @@ def plot(rows, band, ratio, out, title):
     ax.set_ylabel("outlet air pressure gradient dp/dz [Pa/m]")
     ax.set_title(title, fontsize=10)
     if n:
-        ax.legend(fontsize=7, loc="best")
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "outlet_dpdz.png"), dpi=120)
