@@ -158,10 +158,10 @@ def closed_form_rows(spec, b_mm):
     mid = 0.5 * (lo + hi)
     rows = [dict(level="closed-form", model=f"{name}, {kk}: band {lo:.4g}..{hi:.4g} kg/s", air=False,
                  steady_mass_flow_kg_s=mid, outlet_dpdz_Pa_m=None, wall_time_s=wall, cores=1,
-                 source=os.path.relpath(spec["_path"])),
+                 source="compare.json"),
              dict(level="closed-form", model=f"{name} x Carleton (1972) air drag: x{ratio:.3f}", air=True,
                   steady_mass_flow_kg_s=mid * ratio, outlet_dpdz_Pa_m=None, wall_time_s=wall, cores=1,
-                  source=os.path.relpath(spec["_path"]))]
+                  source="compare.json")]
     return rows, (lo, hi), ratio
 
 
@@ -225,6 +225,7 @@ def add_crewdson(rows, rho_b):
                   [x for x in cands if x["model"] == r["model"]]
             if dry:
                 r["crewdson_kg_s"] = cf.crewdson(dry[0]["steady_mass_flow_kg_s"], r["outlet_dpdz_Pa_m"], rho_b)
+                r["pair"] = dry[0]
 
 
 def group_of(level):
@@ -238,16 +239,21 @@ def plot(rows, band, ratio, out, title):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    # one colour per level family and results folder: dry dotted, with air solid
-    families = []
-    for r in rows:
-        key = (DRY_OF.get(r["level"], r["level"]), r.get("group"))
-        if r.get("series") is not None and key not in families:
-            families.append(key)
-    colour = {k: f"C{i % 10}" for i, k in enumerate(families)}
+    # one colour per dry run and the run with air checked against it (the
+    # Crewdson pair), one per unpaired run: dry dotted, with air solid
+    colour, n = {}, 0
+    for r in [x for x in rows if not x["air"]] + [x for x in rows if x["air"]]:
+        if r.get("series") is None:
+            continue
+        pair = r.get("pair")
+        if pair is not None and id(pair) in colour:
+            colour[id(r)] = colour[id(pair)]
+        else:
+            colour[id(r)] = f"C{n % 10}"
+            n += 1
 
     def colour_of(r):
-        return colour[(DRY_OF.get(r["level"], r["level"]), r.get("group"))]
+        return colour[id(r)]
 
     def label_of(r):
         model = r["model"] if len(r["model"]) <= 48 else r["model"][:46].rstrip(" ,") + "..."
@@ -334,7 +340,7 @@ def main(argv=None):
                          outlet_dpdz_Pa_m=lv["outlet_dpdz_Pa_m"] if lv["air"] else None,
                          wall_time_s=lv["wall_time_s"], cores=lv["cores"],
                          group=group_of(lv),
-                         source=os.path.relpath(lv["_dir"]), series=series))
+                         source=os.path.relpath(lv["_dir"], case_dir), series=series))
     add_crewdson(rows, spec["rho_b"])
     rows.sort(key=lambda r: (LEVELS.index(r["level"]), r["air"], r.get("source", "")))
     present = {r["level"] for r in rows}
@@ -361,7 +367,8 @@ def main(argv=None):
             w.writerow([lv, why, "", "", "", "", "", "", "", ""])
     title = f"{spec['case']}, {'slot' if spec['orifice'] == 'slot' else 'orifice'} b = {b_mm:g} mm"
     lines = [f"# Fidelity levels: {title}", "",
-             f"Written by `./granair compare` from {os.path.relpath(spec['_path'])} and the runs' level.json files. "
+             f"Written by `./granair compare` from {os.path.relpath(spec['_path'])} and the runs' level.json files "
+             f"(source: folder relative to the case). "
              f"Steady mass flow for the whole {'silo (full depth)' if spec['orifice'] == 'slot' else 'hopper'}; "
              f"outlet dp/dz is the mean air pressure gradient at the orifice over the steady window (z up: "
              f"negative = suction). Crewdson check: W(dry, same level) x sqrt(1 + (dp/dz)/(rho_b g)) with "
