@@ -22,6 +22,9 @@ import os
 import random
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "pylib"))
+import dem_io  # noqa: E402  (read_dump, the discharge balance, the settle block)
+
 # --- the hopper and the powder (reference case B) ---------------------------
 R_OUT, R_CYL = 0.0125, 0.0635     # orifice and cylinder radius [m]
 H_CONE, H_CYL = 0.036, 0.127      # cone and cylinder height [m]
@@ -257,30 +260,7 @@ processors      * 1 1
 read_data       dem/packing.data
 
 {dem_common(case)}
-# The shutter: the plane z = 0 under the orifice (absent in the discharge run)
-fix shutter all wall/gran model hertz tangential history primitive type 2 zplane 0.0
-
-compute         rke all erotate/sphere
-variable        vrms equal sqrt(2*ke/mass(all))
-variable        ztop equal bound(all,zmax)
-thermo_style    custom step atoms ke c_rke v_vrms v_ztop
-thermo          {chunk}
-thermo_modify   norm no
-
-# Settle: at least {case.settle_min} s, then until the rms speed is below 5 mm/s (at most {case.settle_max} s)
-variable        n loop {n_max}
-label           settle
-run             {chunk}
-if              "$n >= {n_min} && ${{vrms}} < 0.005" then "jump SELF settled"
-next            n
-jump            SELF settle
-label           settled
-print           "granair fill: settled after $n x {chunk} steps, rms speed ${{vrms}} m/s, top ${{ztop}} m"
-unfix           shutter
-reset_timestep  0               # discharge step 0 = the shutter opens
-write_restart   dem/fill.restart
-write_dump      all custom dem/fill.dump id x y z radius mass
-"""
+{dem_io.settle_on_shutter("wall/gran model hertz tangential history primitive type 2 zplane 0.0", chunk, n_min, n_max, case.settle_min, case.settle_max, track_top=True)}"""
     write(os.path.join(d, "dem", "in.fill"), script)
     write(os.path.join(d, "case.json"), json.dumps(dict(case.info(), box_top_m=top), indent=1) + "\n")
 

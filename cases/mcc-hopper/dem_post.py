@@ -26,8 +26,11 @@ import csv
 import json
 import math
 import os
-import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "pylib"))
+import closed_forms as cf  # noqa: E402
+import dem_io              # noqa: E402
 
 C_BEVERLOO, K_RANGE = 0.58, (1.0, 3.0)     # Beverloo et al. (1961), as cases/mcc-hopper/post.py
 RHO_BULK = 900.0                            # kg/m3, reference case B
@@ -44,21 +47,12 @@ def beverloo(k, d, rho_b=RHO_BULK):
 
 
 def carleton_ratio(d=D_PRIMARY, rho_p=1500.0):
-    """Carleton (1972), Powder Technol. 6, 91: outlet velocity V0 from
-    4 V0^2 sin(theta) / Do + 15 rho_f^(1/3) mu^(2/3) V0^(4/3) / (rho_p d^(5/3)) = g.
-    Returns (V0 with the air term, V0 without it); the mass flow scales with V0.
-    An estimate: Carleton's form for coarse particles, theta the cone half angle."""
-    a = 4 * math.sin(CONE_HALF_ANGLE) / D_OUTLET
-    b = 15 * AIR_RHO ** (1 / 3) * AIR_MU ** (2 / 3) / (rho_p * d ** (5 / 3))
-    dry = math.sqrt(G / a)
-    lo, hi = 0.0, dry
-    for _ in range(80):
-        v = 0.5 * (lo + hi)
-        if a * v * v + b * v ** (4 / 3) < G:
-            lo = v
-        else:
-            hi = v
-    return 0.5 * (lo + hi), dry
+    """Carleton (1972) via tools/pylib/closed_forms.py (the compare tool's numbers):
+    (V0 with the air term, V0 without it); the mass flow scales with V0. An
+    estimate: Carleton's form for coarse particles, theta the cone half angle."""
+    th = math.degrees(CONE_HALF_ANGLE)
+    return (cf.carleton_velocity(D_OUTLET, th, d, rho_p, AIR_RHO, AIR_MU, G),
+            cf.carleton_velocity(D_OUTLET, th, d, rho_p, 0.0, 0.0, G))
 
 
 def read_series(path):
@@ -70,31 +64,10 @@ def read_series(path):
 
 
 def read_balance(log_path):
-    """The DEM discharge balance granairFoam prints at the end (DischargeCounter::report)."""
-    with open(log_path) as fh:
-        text = fh.read()
-    i = text.rfind("DEM discharge balance")
-    if i < 0:
-        sys.exit(f"dem_post.py: no discharge balance in {log_path} (did the run finish?)")
-    bal = {}
-    for key, label in (("inserted", "inserted"), ("present", "present"),
-                       ("removed", "removed at the sink"), ("lost", "lost (inserted - present - removed)"),
-                       ("discharged", "discharged (crossed the outlet)")):
-        m = re.search(r"^\s+" + re.escape(label) + r"\s+(-?\d+)\s+(\S+) kg", text[i:], re.M)
-        if not m:
-            sys.exit(f"dem_post.py: '{label}' missing from the discharge balance in {log_path}")
-        bal[key], bal[key + "_kg"] = int(m.group(1)), float(m.group(2))
-    m = re.search(r"total wall time\s+([\d.]+) s", text[i:])
-    bal["wall_time_s"] = float(m.group(1)) if m else float("nan")
-    return bal
+    return dem_io.read_discharge_balance(log_path, "dem_post.py")
 
 
-def read_dump(path):
-    with open(path) as fh:
-        lines = fh.read().splitlines()
-    i = next(k for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
-    cols = lines[i].split()[2:]
-    return [dict(zip(cols, map(float, line.split()))) for line in lines[i + 1:] if line.strip()]
+read_dump = dem_io.read_dump
 
 
 def settled_fill(dump, d):

@@ -22,6 +22,9 @@ import os
 import random
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "pylib"))
+import dem_io  # noqa: E402  (read_dump, the discharge balance, the settle block)
+
 # ---------------------------------------------------------------------------
 # The silo and the powder of the study (cases.md section A). SI units.
 # ---------------------------------------------------------------------------
@@ -408,29 +411,7 @@ processors      * 1 1
 read_data       dem/packing.data
 
 {dem_common(case)}
-# The shutter: the plane z = 0 under the orifice (absent in the discharge runs)
-fix shutter all wall/gran model hertz tangential history cohesion sjkr primitive type 2 zplane 0.0
-
-compute         rke all erotate/sphere
-variable        vrms equal sqrt(2*ke/mass(all))
-thermo_style    custom step atoms ke c_rke v_vrms
-thermo          {chunk}
-thermo_modify   norm no
-
-# Settle: at least {settle_min} s, then until the rms speed is below 5 mm/s (at most {settle_max} s)
-variable        n loop {n_max}
-label           settle
-run             {chunk}
-if              "$n >= {n_min} && ${{vrms}} < 0.005" then "jump SELF settled"
-next            n
-jump            SELF settle
-label           settled
-print           "granair fill: settled after $n x {chunk} steps, rms speed ${{vrms}} m/s"
-unfix           shutter
-reset_timestep  0               # discharge step 0 = the shutter opens
-write_restart   dem/fill.restart
-write_dump      all custom dem/fill.dump id x y z radius mass
-"""
+{dem_io.settle_on_shutter("wall/gran model hertz tangential history cohesion sjkr primitive type 2 zplane 0.0", chunk, n_min, n_max, settle_min, settle_max)}"""
     write(os.path.join(d, "dem", "in.fill"), script)
     write(os.path.join(d, "case.json"), json.dumps(case.info(), indent=1) + "\n")
 
@@ -706,13 +687,7 @@ boundaryField
 """
 
 
-def read_dump(path):
-    """LIGGGHTS `custom` dump: list of dicts per atom (columns from the ITEM: ATOMS line)."""
-    with open(path) as fh:
-        lines = fh.read().splitlines()
-    i = next(k for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
-    cols = lines[i].split()[2:]
-    return [dict(zip(cols, map(float, line.split()))) for line in lines[i + 1:] if line.strip()]
+read_dump = dem_io.read_dump
 
 
 def cell_centres(case):

@@ -27,6 +27,7 @@ sys.path.insert(0, HERE)
 import make_case as mc                                # noqa: E402
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "pylib"))
 import closed_forms as cf                             # noqa: E402
+import dem_io                                         # noqa: E402
 
 G = mc.G
 BEVERLOO_C = 0.58        # Hagen-Beverloo constant used for the slot band (see README)
@@ -55,25 +56,8 @@ def read_series(run_dir):
 
 
 def read_balance(log_path):
-    """The DEM discharge balance granairFoam prints at the end (DischargeCounter::report)."""
-    with open(log_path) as fh:
-        text = fh.read()
-    i = text.rfind("DEM discharge balance")
-    if i < 0:
-        raise SystemExit(f"post: no discharge balance in {log_path} (did the run finish?)")
-    bal = {}
-    for key, label in (("inserted", "inserted"), ("present", "present"),
-                       ("removed", "removed at the sink"), ("lost", "lost (inserted - present - removed)"),
-                       ("discharged", "discharged (crossed the outlet)")):
-        m = re.search(r"^\s+" + re.escape(label) + r"\s+(-?\d+)\s+(\S+) kg", text[i:], re.M)
-        if not m:
-            raise SystemExit(f"post: '{label}' missing from the discharge balance in {log_path}")
-        bal[key] = int(m.group(1))
-        bal[key + "_kg"] = float(m.group(2))
-    m = re.search(r"total wall time\s+([\d.]+) s", text[i:])
-    bal["wall_time_s"] = float(m.group(1)) if m else float("nan")
-    bal["closes"] = bal["lost"] == 0 and bal["inserted"] == bal["present"] + bal["removed"]
-    return bal
+    """The DEM discharge balance granairFoam prints at the end (tools/pylib/dem_io.py)."""
+    return dem_io.read_discharge_balance(log_path, "post")
 
 
 def read_internal_field(path):
