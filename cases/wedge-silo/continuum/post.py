@@ -65,6 +65,12 @@ def read_series(run_dir):
     return {h: data[:, i] for i, h in enumerate(rows[0])}
 
 
+def air_text(silo):
+    if silo.get("rheology", "muI") == "muI":
+        return "Darcy-Ergun air, packing relaxing to phi(I) (span %.3g)" % (silo["phi_max"] - silo["phi_min"])
+    return "Darcy-Ergun air, packing relaxing to the closure's c"
+
+
 def window_means(t, dt, values, width):
     """Time means of per-step values over consecutive windows of `width` s:
     (window centres, means). Step i covers (t[i] - dt[i], t[i]]. A last window
@@ -180,9 +186,11 @@ def post_run(a):
         w.writerow(["t", "mass_flow_kg_s"] + (["outlet_dpdz_Pa_m"] if air else []))
         for c, m in zip(wc, wm):
             w.writerow([f"{c:.6g}"] + [f"{v:.6g}" for v in m])
-    model = (f"mu(I) (mu_s {silo['mu_s']:.3f}, mu_2 {silo['mu_2']:.3f}, I0 {silo['I0']:g}), VOF, "
+    rheology = (f"mu(I) (mu_s {silo['mu_s']:.3f}, mu_2 {silo['mu_2']:.3f}, I0 {silo['I0']:g})"
+                if silo.get("rheology", "muI") == "muI" else "Latz-Schmidt (lactose calibration of case A)")
+    model = (f"{rheology}, VOF, "
              f"{'free-slip' if silo['walls'] == 'slip' else 'no-slip'} walls, "
-             f"{'Darcy-Ergun air, packing relaxing to phi(I) (span %.3g)' % (silo['phi_max'] - silo['phi_min']) if air else 'no air'}, plane mesh N = {silo['mesh_n']} "
+             f"{air_text(silo) if air else 'no air'}, plane mesh N = {silo['mesh_n']} "
              f"({silo['cells']} cells), full 60 mm depth")
     level = {"case": "wedge-silo", "level": "continuum", "model": model, "b_mm": silo["b_mm"], "air": air,
              "steady_mass_flow_kg_s": w_steady, "steady_window_s": [t0, t1],
