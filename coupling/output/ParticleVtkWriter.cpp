@@ -26,6 +26,7 @@
 
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
+#include "output/FormatExact.hpp"
 
 namespace granair {
 
@@ -50,16 +51,6 @@ std::string vtkFileOpen(const char* type) {
     return s;
 }
 
-// Shortest of %.15g .. %.17g that reads back to the same double (the pvd
-// times are exact, yet 0.1 stays "0.1").
-std::string formatExact(double v) {
-    char buf[32];
-    for (int digits = 15; digits <= 17; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
-}
 
 // One point-data or cell array of a piece.
 struct ArraySpec {

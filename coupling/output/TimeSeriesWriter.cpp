@@ -16,6 +16,7 @@
 
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
+#include "output/FormatExact.hpp"
 
 namespace granair {
 
@@ -57,16 +58,6 @@ bool writeStringAttribute(hid_t object, const char* name, const std::string& val
     return ok;
 }
 
-// Shortest of %.15g .. %.17g that reads back to the same double: exact, but
-// 0.1 stays "0.1" (%.17g alone would print 0.10000000000000001).
-std::string formatExact(double v) {
-    char buf[32];
-    for (int digits = 15; digits <= 17; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
-}
 
 void checkColumns(const std::string& stem, const std::vector<Column>& columns) {
     if (columns.empty()) fail<InputError>("time series '", stem, "': no columns given");

@@ -1,2 +1,3 @@
 list(APPEND GRANAIR_COUPLING_SOURCES output/TimeSeriesWriter.cpp)
 list(APPEND GRANAIR_COUPLING_SOURCES output/ParticleVtkWriter.cpp)
+list(APPEND GRANAIR_COUPLING_SOURCES output/FormatExact.cpp)
