@@ -7,6 +7,7 @@ granair_models(FAMILY drag LIST DragLawList MODELS
   DiFelice
   ErgunGidaspow
   SchillerNaumann
+  Stokes
   WenYu
 )
 # The rest of the module.

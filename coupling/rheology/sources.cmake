@@ -6,6 +6,7 @@
 granair_models(FAMILY rheology LIST RheologyList MODELS
   LatzSchmidt
   MuI
+  Newtonian
 )
 # The rest of the module.
 list(APPEND GRANAIR_COUPLING_SOURCES
