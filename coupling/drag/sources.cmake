@@ -7,7 +7,6 @@ granair_models(FAMILY drag LIST DragLawList MODELS
   DiFelice
   ErgunGidaspow
   SchillerNaumann
-  Stokes
   WenYu
 )
 # The rest of the module.

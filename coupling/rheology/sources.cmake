@@ -6,7 +6,6 @@
 granair_models(FAMILY rheology LIST RheologyList MODELS
   LatzSchmidt
   MuI
-  Newtonian
 )
 # The rest of the module.
 list(APPEND GRANAIR_COUPLING_SOURCES

@@ -7,7 +7,6 @@ granair_models(FAMILY voidfraction LIST VoidFractionModelList MODELS
   CentreVoidFraction
   DividedVoidFraction
   GaussianVoidFraction
-  LumpedVoidFraction
 )
 # The rest of the module.
 list(APPEND GRANAIR_COUPLING_SOURCES
