@@ -1,0 +1,409 @@
+// CoarseGrainer.cpp: see CoarseGrainer.hpp.
+#include "cg/CoarseGrainer.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cg/CgPointTerms.hpp"
+#include "cg/GaussLegendre.hpp"
+#include "core/Error.hpp"
+
+namespace granair {
+
+struct CoarseGrainer::Copy {
+    enum Kind { particle, pair, wall } kind = particle;
+    int index = 0;
+    Vec3 shift = Vec3::Zero();
+    double s0 = 0.0, s1 = 1.0;  // segment parameter range inside the window (averaged axes)
+    bool pointInside = true;    // wall: contact point inside the window (averaged axes)
+    int lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};  // inclusive grid index ranges
+};
+
+namespace {
+
+// Nodes per panel of the composite azimuthal rule for contact segments (RZ),
+// and the largest panel, as arc length in cutoffs.
+constexpr int segmentPanelNodes = 8;
+constexpr double segmentPanelArc = 0.5;
+
+// Clip the segment a + s (b - a), s in [s0, s1], to lo <= x < hi along one axis.
+bool clipToSlab(double a, double b, double lo, double hi, double& s0, double& s1) {
+    const double d = b - a;
+    if (d == 0.0) return a >= lo && a < hi;
+    double t0 = (lo - a) / d, t1 = (hi - a) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    s0 = std::max(s0, t0);
+    s1 = std::min(s1, t1);
+    return s1 > s0;
+}
+
+// Grid index range of the coordinates [xmin, xmax] along an axis.
+void indexRange(const CgGrid& g, int axis, double xmin, double xmax, int& lo, int& hi) {
+    const double h = g.spacing(axis);
+    lo = std::max(0, int(std::ceil((xmin - g.lo(axis)) / h - 0.5)));
+    hi = std::min(g.count(axis) - 1, int(std::floor((xmax - g.lo(axis)) / h - 0.5)));
+}
+
+// Local frame of a point about the axis: e_r, e_t (theta), and the radius.
+struct RingFrame {
+    Vec3 er{1, 0, 0}, et{0, 1, 0};
+    double r = 0;
+};
+RingFrame ringFrame(const Vec3& axis, const Vec3& x) {
+    RingFrame f;
+    const double dx = x[0] - axis[0], dy = x[1] - axis[1];
+    f.r = std::hypot(dx, dy);
+    if (f.r > 0) {
+        f.er = Vec3(dx / f.r, dy / f.r, 0);
+        f.et = Vec3(-f.er[1], f.er[0], 0);
+    }
+    return f;
+}
+Vec3 toLocal(const RingFrame& f, const Vec3& v) { return Vec3(v.dot(f.er), v.dot(f.et), v[2]); }
+
+// The segment from A to B (3-D) as a kernel-space segment (RZ: all of 3-D).
+cgterms::Segment makeSegment(const Vec3& A, const Vec3& B, const std::array<bool, 3>& res, double s0,
+                             double s1) {
+    cgterms::Segment s;
+    Vec3 e = Vec3::Zero();
+    for (int a = 0; a < 3; ++a)
+        if (res[a]) {
+            s.a[a] = A[a];
+            e[a] = B[a] - A[a];
+        }
+    s.length = e.norm();
+    if (s.length > 0) s.u = e / s.length;
+    s.s0 = s0;
+    s.s1 = s1;
+    return s;
+}
+
+// Add the azimuthal average of a contact segment's tensor over the ring
+// (r, z) (RZ): composite Gauss-Legendre over the angles where the ring may
+// meet the capsule around the segment.
+void addSegmentRing(const CgKernel& k3, const Vec3& axis, const cgterms::Segment& seg3,
+                    const std::array<double, 9>& T, const Vec3& mid, double reach, double r, double z,
+                    double* rec) {
+    const RingFrame mf = ringFrame(axis, mid);
+    const double dz = z - mid[2];
+    const double A = r * r + mf.r * mf.r + dz * dz, B = 2.0 * r * mf.r;
+    if (A - B >= reach * reach) return;
+    double delta = M_PI;
+    if (B > 0.0) {
+        const double cd = (A - reach * reach) / B;
+        if (cd > -1.0) delta = std::acos(std::min(1.0, cd));
+    }
+    const double thetaM = std::atan2(mid[1] - axis[1], mid[0] - axis[0]);
+    const int panels = std::max(2, int(std::ceil(2.0 * delta * r / (segmentPanelArc * k3.cutoff()))));
+    const auto& gl = gaussLegendre(segmentPanelNodes);
+    const double hp = delta / panels;  // half the panel width
+    double m0 = 0, mc = 0, ms = 0, mcc = 0, mcs = 0, mss = 0;
+    for (int p = 0; p < panels; ++p) {
+        const double centre = thetaM - delta + (2 * p + 1) * hp;
+        for (int q = 0; q < segmentPanelNodes; ++q) {
+            const double th = centre + hp * gl.x[q];
+            const double c = std::cos(th), s = std::sin(th);
+            const Vec3 X(axis[0] + r * c, axis[1] + r * s, z);
+            const double f = gl.w[q] * cgterms::segmentWeight(k3, seg3, X);
+            if (f == 0.0) continue;
+            m0 += f;
+            mc += f * c;
+            ms += f * s;
+            mcc += f * c * c;
+            mcs += f * c * s;
+            mss += f * s * s;
+        }
+    }
+    if (m0 == 0.0) return;
+    const double scale = hp / (2.0 * M_PI);
+    m0 *= scale, mc *= scale, ms *= scale, mcc *= scale, mcs *= scale, mss *= scale;
+    const double xx = T[0], xy = T[1], xz = T[2], yx = T[3], yy = T[4], yz = T[5], zx = T[6], zy = T[7],
+                 zz = T[8];
+    double* o = rec + cgraw::contactStress;
+    o[0] += mcc * xx + mcs * (xy + yx) + mss * yy;   // rr
+    o[1] += -mcs * xx + mcc * xy - mss * yx + mcs * yy;  // rt
+    o[2] += mc * xz + ms * yz;                        // rz
+    o[3] += -mcs * xx - mss * xy + mcc * yx + mcs * yy;  // tr
+    o[4] += mss * xx - mcs * (xy + yx) + mcc * yy;    // tt
+    o[5] += -ms * xz + mc * yz;                       // tz
+    o[6] += mc * zx + ms * zy;                        // zr
+    o[7] += -ms * zx + mc * zy;                       // zt
+    o[8] += m0 * zz;                                  // zz
+}
+
+}  // namespace
+
+CoarseGrainer::CoarseGrainer(CgGrid grid, CgKernel kernel, int azimuthalNodes)
+    : grid_(std::move(grid)), kernel_(std::move(kernel)), azimuthalNodes_(azimuthalNodes) {
+    if (kernel_.dims() != grid_.kernelDims())
+        fail("CoarseGrainer: a ", kernel_.dims(), "-D kernel for a ", grid_.kernelDims(), "-D ",
+             cgCoordinatesName(grid_.coordinates()), " grid");
+    if (azimuthalNodes_ < 2 || azimuthalNodes_ > 200)
+        fail<InputError>("CG: ", azimuthalNodes_, " azimuthal nodes, expected 2 to 200");
+    slabAxis_ = grid_.count(2) > 1 ? 2 : grid_.count(1) > 1 ? 1 : 0;
+}
+
+std::vector<CoarseGrainer::Copy> CoarseGrainer::copies(const CgSnapshot& snap, bool gridOnly) const {
+    const double c = kernel_.cutoff();
+    const auto res = cgResolvedAxes(grid_.coordinates());
+    const bool rz = grid_.isCylindrical();
+    const Box& win = grid_.window();
+    // Where an object can touch the grid: the window grown by the cutoff along
+    // the directions the kernel acts in (all three for RZ).
+    Box reach = win;
+    for (int a = 0; a < 3; ++a)
+        if (rz || res[a]) {
+            reach.lo[a] = (rz && a == 2 ? grid_.lo(2) : win.lo[a]) - c;
+            reach.hi[a] = (rz && a == 2 ? grid_.hi(2) : win.hi[a]) + c;
+        }
+    // Image shifts: one period either way along periodic directions.
+    std::vector<Vec3> shifts{Vec3::Zero()};
+    for (int a = 0; a < 3; ++a) {
+        if (!snap.domain.periodic[a]) continue;
+        const double L = snap.domain.period(a);
+        std::vector<Vec3> more;
+        for (const auto& s : shifts)
+            for (double k : {-1.0, 1.0}) {
+                Vec3 t = s;
+                t[a] += k * L;
+                more.push_back(t);
+            }
+        shifts.insert(shifts.end(), more.begin(), more.end());
+    }
+
+    std::vector<Copy> out;
+    out.reserve(snap.particles.size() + snap.pairs.size() + snap.walls.size());
+    auto place = [&](Copy::Kind kind, int index, const Vec3& A, const Vec3& B) {
+        const Vec3 bmin = A.cwiseMin(B), bmax = A.cwiseMax(B);
+        for (const auto& s : shifts) {
+            bool meets = true;
+            for (int a = 0; a < 3 && meets; ++a)
+                meets = bmax[a] + s[a] >= reach.lo[a] && bmin[a] + s[a] <= reach.hi[a];
+            if (!meets) continue;
+            Copy cp;
+            cp.kind = kind;
+            cp.index = index;
+            cp.shift = s;
+            const Vec3 a = A + s, b = B + s;
+            if (!rz) {
+                // Along averaged axes: a particle counts if its centre is in the
+                // window, a segment for its part inside, a wall's traction if
+                // its contact point is inside.
+                bool particleIn = true, segmentIn = true, pointIn = true;
+                for (int ax = 0; ax < 3; ++ax) {
+                    if (res[ax]) continue;
+                    if (kind == Copy::particle) {
+                        particleIn = particleIn && a[ax] >= win.lo[ax] && a[ax] < win.hi[ax];
+                        continue;
+                    }
+                    segmentIn = segmentIn && clipToSlab(a[ax], b[ax], win.lo[ax], win.hi[ax], cp.s0, cp.s1);
+                    pointIn = pointIn && b[ax] >= win.lo[ax] && b[ax] < win.hi[ax];
+                }
+                if (kind == Copy::particle ? !particleIn : !(segmentIn || (kind == Copy::wall && pointIn)))
+                    continue;
+                if (!segmentIn) cp.s0 = cp.s1 = 0.0;
+                cp.pointInside = kind == Copy::wall && pointIn;
+                Vec3 clo = Vec3::Constant(1e300), chi = Vec3::Constant(-1e300);
+                if (kind == Copy::particle) clo = chi = a;
+                if (cp.s1 > cp.s0) {
+                    const Vec3 sa = a + cp.s0 * (b - a), sb = a + cp.s1 * (b - a);
+                    clo = sa.cwiseMin(sb), chi = sa.cwiseMax(sb);
+                }
+                if (cp.pointInside) clo = clo.cwiseMin(b), chi = chi.cwiseMax(b);
+                bool empty = false;
+                for (int ax = 0; ax < 3; ++ax) {
+                    if (!res[ax]) {
+                        cp.lo[ax] = cp.hi[ax] = 0;
+                        continue;
+                    }
+                    indexRange(grid_, ax, clo[ax] - c, chi[ax] + c, cp.lo[ax], cp.hi[ax]);
+                    empty = empty || cp.lo[ax] > cp.hi[ax];
+                }
+                if (!empty || !gridOnly) out.push_back(cp);
+            } else {
+                // RZ: radii the segment's bounding box spans about the axis.
+                const Vec3 ax = grid_.axisOrigin();
+                const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+                const double nx = std::clamp(ax[0], lo[0], hi[0]) - ax[0];
+                const double ny = std::clamp(ax[1], lo[1], hi[1]) - ax[1];
+                const double fx = std::max(std::abs(lo[0] - ax[0]), std::abs(hi[0] - ax[0]));
+                const double fy = std::max(std::abs(lo[1] - ax[1]), std::abs(hi[1] - ax[1]));
+                indexRange(grid_, 0, std::hypot(nx, ny) - c, std::hypot(fx, fy) + c, cp.lo[0], cp.hi[0]);
+                indexRange(grid_, 2, lo[2] - c, hi[2] + c, cp.lo[2], cp.hi[2]);
+                cp.lo[1] = cp.hi[1] = 0;
+                if ((cp.lo[0] <= cp.hi[0] && cp.lo[2] <= cp.hi[2]) || !gridOnly) out.push_back(cp);
+            }
+        }
+    };
+    for (std::size_t i = 0; i < snap.particles.size(); ++i)
+        place(Copy::particle, int(i), snap.particles[i].x, snap.particles[i].x);
+    for (std::size_t i = 0; i < snap.pairs.size(); ++i)
+        place(Copy::pair, int(i), snap.pairs[i].xi, snap.pairs[i].xj);
+    for (std::size_t i = 0; i < snap.walls.size(); ++i)
+        place(Copy::wall, int(i), snap.walls[i].x, snap.walls[i].point);
+    return out;
+}
+
+// A copy made ready for its grid points: everything that does not depend on
+// the point, computed once.
+struct CoarseGrainer::Prepared {
+    Copy::Kind kind = Copy::particle;
+    Vec3 x = Vec3::Zero();      // particle centre (shifted), or the segment's end B = contact point
+    cgterms::Particle terms;    // particle (RZ: in its local frame)
+    cgterms::Segment segment;   // pair or wall segment (kernel space)
+    std::array<double, 9> T{};  // f (x) (A - B) / averaged volume
+    bool hasSegment = false, hasPoint = false;
+    Vec3 force = Vec3::Zero();  // wall force (RZ: in the contact point's local frame)
+    Vec3 mid = Vec3::Zero();    // RZ: segment midpoint, and the capsule's bounding radius
+    double reach = 0.0;
+    double scale = 1.0;         // 1 / averaged volume
+};
+
+CoarseGrainer::Prepared CoarseGrainer::prepare(const Copy& cp, const CgSnapshot& snap) const {
+    Prepared p;
+    p.kind = cp.kind;
+    const bool rz = grid_.isCylindrical();
+    const auto res = rz ? std::array<bool, 3>{{true, true, true}} : cgResolvedAxes(grid_.coordinates());
+    p.scale = rz ? 1.0 : 1.0 / grid_.averagedVolume();
+    if (cp.kind == Copy::particle) {
+        const CgParticle& q = snap.particles[cp.index];
+        p.x = q.x + cp.shift;
+        if (rz) {
+            const RingFrame fr = ringFrame(grid_.axisOrigin(), p.x);
+            p.terms = cgterms::particle(q, toLocal(fr, q.v), toLocal(fr, q.omega));
+        } else {
+            p.terms = cgterms::particle(q, q.v, q.omega);
+        }
+        return p;
+    }
+    Vec3 A, B, f;
+    if (cp.kind == Copy::pair) {
+        const auto& c = snap.pairs[cp.index];
+        A = c.xi, B = c.xj, f = c.force;
+    } else {
+        const auto& w = snap.walls[cp.index];
+        A = w.x, B = w.point, f = w.force;
+    }
+    const Vec3 a = A + cp.shift, b = B + cp.shift;
+    p.x = b;
+    p.hasSegment = cp.s1 > cp.s0;
+    p.segment = makeSegment(a, b, res, cp.s0, cp.s1);
+    p.T = cgterms::outer(f, A - B, p.scale);
+    p.hasPoint = cp.kind == Copy::wall && cp.pointInside;
+    p.force = rz ? toLocal(ringFrame(grid_.axisOrigin(), b), f) : f;
+    p.mid = 0.5 * (a + b);
+    p.reach = 0.5 * p.segment.length + kernel_.cutoff();
+    return p;
+}
+
+// Deposit one copy on the grid points of its range whose slab index lies in
+// [slabLo, slabHi].
+void CoarseGrainer::deposit(const Copy& cp, const CgSnapshot& snap, int slabLo, int slabHi,
+                            CgRawFields& out) const {
+    int lo[3] = {cp.lo[0], cp.lo[1], cp.lo[2]}, hi[3] = {cp.hi[0], cp.hi[1], cp.hi[2]};
+    lo[slabAxis_] = std::max(lo[slabAxis_], slabLo);
+    hi[slabAxis_] = std::min(hi[slabAxis_], slabHi);
+    if (lo[slabAxis_] > hi[slabAxis_]) return;
+    const Prepared p = prepare(cp, snap);
+    Vec3 g;
+    for (int k = lo[2]; k <= hi[2]; ++k) {
+        g[2] = grid_.coord(2, k);
+        for (int j = lo[1]; j <= hi[1]; ++j) {
+            g[1] = grid_.coord(1, j);
+            for (int i = lo[0]; i <= hi[0]; ++i) {
+                g[0] = grid_.coord(0, i);
+                apply(p, g, out.at(grid_.index(i, j, k)));
+            }
+        }
+    }
+}
+
+void CoarseGrainer::apply(const Prepared& p, const Vec3& point, double* rec) const {
+    if (!grid_.isCylindrical()) {
+        const auto res = cgResolvedAxes(grid_.coordinates());
+        Vec3 g = Vec3::Zero();
+        for (int a = 0; a < 3; ++a)
+            if (res[a]) g[a] = point[a];
+        auto distance2 = [&](const Vec3& x) {
+            double d2 = 0;
+            for (int a = 0; a < 3; ++a)
+                if (res[a]) d2 += (g[a] - x[a]) * (g[a] - x[a]);
+            return d2;
+        };
+        const bool unit = kernel_.dims() == 0;
+        if (p.kind == Copy::particle) {
+            const double r2 = distance2(p.x);
+            if (unit || r2 < kernel_.cutoff2()) cgterms::addParticle(rec, p.terms, kernel_.value(r2) * p.scale);
+            return;
+        }
+        if (p.hasSegment) {
+            const double lambda = cgterms::segmentWeight(kernel_, p.segment, g);
+            if (lambda != 0.0) cgterms::addTensor(rec, p.T, lambda);
+        }
+        if (p.hasPoint) {
+            const double r2 = distance2(p.x);
+            if (unit || r2 < kernel_.cutoff2()) {
+                const double psi = kernel_.value(r2) * p.scale;
+                for (int a = 0; a < 3; ++a) rec[cgraw::wallForce + a] += p.force[a] * psi;
+            }
+        }
+        return;
+    }
+
+    // RZ: point = (r, -, z).
+    const Vec3& axis = grid_.axisOrigin();
+    const double r = point[0], z = point[2];
+    auto weightsAt = [&](const Vec3& x) {
+        const RingFrame fr = ringFrame(axis, x);
+        const double dz = z - x[2];
+        return cgterms::ringWeights(kernel_, r * r + fr.r * fr.r + dz * dz, 2.0 * r * fr.r, azimuthalNodes_);
+    };
+    if (p.kind == Copy::particle) {
+        const auto w = weightsAt(p.x);
+        if (!w.zero()) cgterms::addParticleRing(rec, p.terms, w);
+        return;
+    }
+    addSegmentRing(kernel_, axis, p.segment, p.T, p.mid, p.reach, r, z, rec);
+    if (p.hasPoint) {
+        const auto w = weightsAt(p.x);
+        if (!w.zero()) cgterms::addVectorRing(rec, cgraw::wallForce, p.force, w);
+    }
+}
+
+CgRawFields CoarseGrainer::compute(const CgSnapshot& snap, int threads, CgCounts* counts) const {
+    const auto list = copies(snap, true);
+    if (counts) {
+        *counts = CgCounts{};
+        for (const auto& c : list)
+            (c.kind == Copy::particle ? counts->particles : c.kind == Copy::pair ? counts->pairs : counts->walls)++;
+    }
+    CgRawFields out(grid_.size());
+    const int nSlab = grid_.count(slabAxis_);
+    const int nThreads = threads > 0 ? threads : omp_get_max_threads();
+    // Several slabs per thread, handed out dynamically: particles crowd in
+    // parts of a silo, so equal slabs are not equal work.
+    const int chunks = std::min(nSlab, 4 * nThreads);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nThreads)
+    for (int ch = 0; ch < chunks; ++ch) {
+        const int k0 = int(std::int64_t(nSlab) * ch / chunks);
+        const int k1 = int(std::int64_t(nSlab) * (ch + 1) / chunks) - 1;
+        for (const auto& c : list)
+            if (c.hi[slabAxis_] >= k0 && c.lo[slabAxis_] <= k1) deposit(c, snap, k0, k1, out);
+    }
+    return out;
+}
+
+CgRawFields CoarseGrainer::evaluateAt(const std::vector<Vec3>& points, const CgSnapshot& snap) const {
+    // Every copy at every point: apply does the cutoff tests.
+    const auto list = copies(snap, false);
+    CgRawFields out(points.size());
+    for (const auto& c : list) {
+        const Prepared prep = prepare(c, snap);
+        for (std::size_t p = 0; p < points.size(); ++p) apply(prep, points[p], out.at(p));
+    }
+    return out;
+}
+
+}  // namespace granair

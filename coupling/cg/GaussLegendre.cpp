@@ -1,0 +1,63 @@
+// GaussLegendre.cpp: see GaussLegendre.hpp.
+#include "cg/GaussLegendre.hpp"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "core/Error.hpp"
+
+namespace granair {
+
+namespace {
+
+GaussLegendreRule computeRule(int n) {
+    GaussLegendreRule r;
+    r.x.resize(n);
+    r.w.resize(n);
+    for (int i = 0; i < (n + 1) / 2; ++i) {
+        // Tricomi's initial guess for the i-th root from the top, then Newton.
+        double x = std::cos(M_PI * (i + 0.75) / (n + 0.5));
+        double dp = 0.0;
+        for (int it = 0; it < 100; ++it) {
+            double p0 = 1.0, p1 = x;
+            for (int k = 2; k <= n; ++k) {
+                const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            dp = n * (x * p1 - p0) / (x * x - 1.0);
+            const double dx = p1 / dp;
+            x -= dx;
+            if (std::abs(dx) < 1e-17) break;
+        }
+        // Recompute the derivative at the converged root for the weight.
+        double p0 = 1.0, p1 = x;
+        for (int k = 2; k <= n; ++k) {
+            const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+            p0 = p1;
+            p1 = p2;
+        }
+        dp = n * (x * p1 - p0) / (x * x - 1.0);
+        const double w = 2.0 / ((1.0 - x * x) * dp * dp);
+        r.x[n - 1 - i] = x;
+        r.x[i] = -x;
+        r.w[i] = r.w[n - 1 - i] = w;
+    }
+    if (n % 2 == 1) r.x[n / 2] = 0.0;
+    return r;
+}
+
+}  // namespace
+
+const GaussLegendreRule& gaussLegendre(int n) {
+    if (n < 1 || n > 200) fail("gaussLegendre: order ", n, " outside 1..200");
+    static std::mutex mutex;
+    static std::map<int, GaussLegendreRule> cache;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = cache.find(n);
+    if (it == cache.end()) it = cache.emplace(n, computeRule(n)).first;
+    return it->second;
+}
+
+}  // namespace granair

@@ -1,0 +1,32 @@
+// HeavisideKernel.cpp: see HeavisideKernel.hpp.
+#include "cg/HeavisideKernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.hpp"
+
+namespace granair {
+
+HeavisideKernel::HeavisideKernel(double radius) : c_(radius) {
+    if (!(c_ > 0.0) || !std::isfinite(c_)) fail<InputError>("heaviside kernel: width ", c_, " m, expected > 0");
+}
+
+std::unique_ptr<CgKernelShape> HeavisideKernel::fromDict(const Dictionary& dict) {
+    const double c = dict.getDouble("width", 0.0, 1e300);
+    if (!(c > 0.0)) fail<InputError>(dict.where("width"), ": expected a kernel width (ball radius) > 0 [m]");
+    return std::make_unique<HeavisideKernel>(c);
+}
+
+double HeavisideKernel::shapeLineIntegral(double p2, double a0, double a1) const {
+    const double h2 = c_ * c_ - p2;
+    if (h2 <= 0.0) return 0.0;
+    const double h = std::sqrt(h2);
+    return std::max(0.0, std::min(a1, h) - std::max(a0, -h));
+}
+
+std::unique_ptr<CgKernelShape> HeavisideKernel::scaled(double factor) const {
+    return std::make_unique<HeavisideKernel>(c_ * factor);
+}
+
+}  // namespace granair
