@@ -35,15 +35,19 @@ RingWeights ringWeights(const CgKernel& k3, double A, double B, int nodes) {
     const auto& gl = gaussLegendre(nodes);
     double s0 = 0, s1 = 0, s2 = 0;
     for (int q = 0; q < nodes; ++q) {
-        const double alpha = 0.5 * theta * (gl.x[q] + 1.0);
+        // alpha = theta (1 - cos(tau/2)): nodes gather at alpha = 0, where a
+        // ring passing near the particle's centre sees the kernel least
+        // smooth (Lucy's |x|^3 term); dalpha = theta/2 sin(tau/2) dtau.
+        const double tau = 0.5 * M_PI * (gl.x[q] + 1.0);
+        const double alpha = theta * (1.0 - std::cos(0.5 * tau));
         const double ca = std::cos(alpha);
-        const double f = gl.w[q] * k3.value(std::max(0.0, A - B * ca));
+        const double f = gl.w[q] * std::sin(0.5 * tau) * k3.value(std::max(0.0, A - B * ca));
         s0 += f;
         s1 += f * ca;
         s2 += f * ca * ca;
     }
-    // (1/2pi) int_{-theta}^{theta} = (1/pi) int_0^theta; the rule's factor theta/2.
-    const double scale = 0.5 * theta / M_PI;
+    // (1/2pi) int_{-theta}^{theta} = (1/pi) int_0^theta; the map's factor theta pi/4.
+    const double scale = 0.25 * theta;
     w.w0 = s0 * scale;
     w.w1 = s1 * scale;
     w.w2 = s2 * scale;

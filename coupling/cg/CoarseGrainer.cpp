@@ -23,9 +23,9 @@ struct CoarseGrainer::Copy {
 
 namespace {
 
-// Nodes per panel of the composite azimuthal rule for contact segments (RZ),
-// and the largest panel, as arc length in cutoffs.
-constexpr int segmentPanelNodes = 8;
+// Gauss nodes per piece of the azimuthal rule for contact segments (RZ).
+constexpr int segmentPieceNodes = 8;
+// Largest arc of one sub-panel, in cutoffs (the Gaussian varies on c/3).
 constexpr double segmentPanelArc = 0.5;
 
 // Clip the segment a + s (b - a), s in [s0, s1], to lo <= x < hi along one axis.
@@ -80,9 +80,33 @@ cgterms::Segment makeSegment(const Vec3& A, const Vec3& B, const std::array<bool
     return s;
 }
 
+// Angles on the ring (r, z) about the axis where |X(theta) - P| = c, within
+// [t0, t1] (shifted by 2 pi as needed).
+void ballCrossings(const Vec3& axis, const Vec3& P, double c, double r, double z, double t0, double t1,
+                   std::vector<double>& out) {
+    const double dx = P[0] - axis[0], dy = P[1] - axis[1], dz = z - P[2];
+    const double rp = std::hypot(dx, dy);
+    const double A = r * r + rp * rp + dz * dz, B = 2.0 * r * rp;
+    if (B <= 0.0) return;
+    const double ct = (A - c * c) / B;
+    if (!(ct > -1.0 && ct < 1.0)) return;
+    const double tp = std::atan2(dy, dx), T = std::acos(ct);
+    for (double t : {tp - T, tp + T})
+        for (int k = -2; k <= 2; ++k) {
+            const double u = t + 2.0 * M_PI * k;
+            if (u > t0 && u < t1) out.push_back(u);
+        }
+}
+
 // Add the azimuthal average of a contact segment's tensor over the ring
-// (r, z) (RZ): composite Gauss-Legendre over the angles where the ring may
-// meet the capsule around the segment.
+// (r, z) (RZ). The angles where the ring can meet the capsule about the
+// segment (radius c) come from its bounding sphere; inside them the
+// integrand is smooth except where the ring crosses the balls about the
+// ends (found exactly) and the cylinder about the segment (sign changes of
+// a trigonometric polynomial of degree 2, sampled and bisected): these are
+// the pieces' ends, and each piece gets a Gauss-Legendre rule in
+// t = acos(1 - 2 (theta - a)/(b - a)), which also absorbs the square-root
+// behaviour at the support's edge.
 void addSegmentRing(const CgKernel& k3, const Vec3& axis, const cgterms::Segment& seg3,
                     const std::array<double, 9>& T, const Vec3& mid, double reach, double r, double z,
                     double* rec) {
@@ -96,41 +120,92 @@ void addSegmentRing(const CgKernel& k3, const Vec3& axis, const cgterms::Segment
         if (cd > -1.0) delta = std::acos(std::min(1.0, cd));
     }
     const double thetaM = std::atan2(mid[1] - axis[1], mid[0] - axis[0]);
-    const int panels = std::max(2, int(std::ceil(2.0 * delta * r / (segmentPanelArc * k3.cutoff()))));
-    const auto& gl = gaussLegendre(segmentPanelNodes);
-    const double hp = delta / panels;  // half the panel width
+    const double t0 = thetaM - delta, t1 = thetaM + delta;
+    const double c = k3.cutoff();
+    std::vector<double> br{t0, t1};
+    const Vec3 a = seg3.a, b = seg3.a + seg3.length * seg3.u;
+    ballCrossings(axis, a, c, r, z, t0, t1, br);
+    ballCrossings(axis, b, c, r, z, t0, t1, br);
+    if (seg3.length > 0.0) {
+        auto cylinder = [&](double t) {
+            const Vec3 d(axis[0] + r * std::cos(t) - a[0], axis[1] + r * std::sin(t) - a[1], z - a[2]);
+            const double along = d.dot(seg3.u);
+            return d.squaredNorm() - along * along - c * c;
+        };
+        constexpr int samples = 24;
+        double fPrev = cylinder(t0), tPrev = t0;
+        for (int q = 1; q <= samples; ++q) {
+            const double t = t0 + (t1 - t0) * q / samples;
+            const double f = cylinder(t);
+            if ((f > 0.0) != (fPrev > 0.0)) {
+                double lo = tPrev, hi = t;
+                const bool loPositive = fPrev > 0.0;
+                for (int it = 0; it < 52 && hi - lo > 1e-15 * (1.0 + std::abs(lo)); ++it) {
+                    const double m = 0.5 * (lo + hi);
+                    ((cylinder(m) > 0.0) == loPositive ? lo : hi) = m;
+                }
+                br.push_back(0.5 * (lo + hi));
+            }
+            fPrev = f, tPrev = t;
+        }
+    }
+    std::sort(br.begin(), br.end());
+    const auto& gl = gaussLegendre(segmentPieceNodes);
     double m0 = 0, mc = 0, ms = 0, mcc = 0, mcs = 0, mss = 0;
-    for (int p = 0; p < panels; ++p) {
-        const double centre = thetaM - delta + (2 * p + 1) * hp;
-        for (int q = 0; q < segmentPanelNodes; ++q) {
-            const double th = centre + hp * gl.x[q];
-            const double c = std::cos(th), s = std::sin(th);
-            const Vec3 X(axis[0] + r * c, axis[1] + r * s, z);
-            const double f = gl.w[q] * cgterms::segmentWeight(k3, seg3, X);
-            if (f == 0.0) continue;
-            m0 += f;
-            mc += f * c;
-            ms += f * s;
-            mcc += f * c * c;
-            mcs += f * c * s;
-            mss += f * s * s;
+    auto node = [&](double th, double wq) {
+        const double cs = std::cos(th), sn = std::sin(th);
+        const Vec3 X(axis[0] + r * cs, axis[1] + r * sn, z);
+        const double f = wq * cgterms::segmentWeight(k3, seg3, X);
+        if (f == 0.0) return;
+        m0 += f;
+        mc += f * cs;
+        ms += f * sn;
+        mcc += f * cs * cs;
+        mcs += f * cs * sn;
+        mss += f * sn * sn;
+    };
+    for (std::size_t p = 0; p + 1 < br.size(); ++p) {
+        const double len = br[p + 1] - br[p];
+        if (!(len > 0.0)) continue;
+        // Sub-panels no longer than segmentPanelArc cutoffs of arc, nor a
+        // quarter turn (the frame's rotation); the end ones (a kink or the
+        // support's edge at one side) in the cosine map.
+        const int m = std::max({1, int(std::ceil(r * len / (segmentPanelArc * c))), int(std::ceil(len / (0.5 * M_PI)))});
+        const double h = len / m;
+        for (int sp = 0; sp < m; ++sp) {
+            const double lo = br[p] + sp * h;
+            for (int q = 0; q < segmentPieceNodes; ++q) {
+                if (sp == 0 || sp == m - 1) {
+                    // cos map towards the piece end(s) this sub-panel holds
+                    const double tau = 0.5 * M_PI * (gl.x[q] + 1.0);
+                    if (m == 1) {
+                        node(lo + 0.5 * h * (1.0 - std::cos(tau)), gl.w[q] * 0.25 * M_PI * h * std::sin(tau));
+                    } else if (sp == 0) {  // end at lo: x = lo + h (1 - cos(tau/2))
+                        node(lo + h * (1.0 - std::cos(0.5 * tau)), gl.w[q] * 0.25 * M_PI * h * std::sin(0.5 * tau));
+                    } else {  // end at lo + h
+                        node(lo + h * std::sin(0.5 * tau), gl.w[q] * 0.25 * M_PI * h * std::cos(0.5 * tau));
+                    }
+                } else {
+                    node(lo + 0.5 * h * (gl.x[q] + 1.0), 0.5 * h * gl.w[q]);
+                }
+            }
         }
     }
     if (m0 == 0.0) return;
-    const double scale = hp / (2.0 * M_PI);
+    const double scale = 1.0 / (2.0 * M_PI);
     m0 *= scale, mc *= scale, ms *= scale, mcc *= scale, mcs *= scale, mss *= scale;
     const double xx = T[0], xy = T[1], xz = T[2], yx = T[3], yy = T[4], yz = T[5], zx = T[6], zy = T[7],
                  zz = T[8];
     double* o = rec + cgraw::contactStress;
-    o[0] += mcc * xx + mcs * (xy + yx) + mss * yy;   // rr
+    o[0] += mcc * xx + mcs * (xy + yx) + mss * yy;       // rr
     o[1] += -mcs * xx + mcc * xy - mss * yx + mcs * yy;  // rt
-    o[2] += mc * xz + ms * yz;                        // rz
+    o[2] += mc * xz + ms * yz;                           // rz
     o[3] += -mcs * xx - mss * xy + mcc * yx + mcs * yy;  // tr
-    o[4] += mss * xx - mcs * (xy + yx) + mcc * yy;    // tt
-    o[5] += -ms * xz + mc * yz;                       // tz
-    o[6] += mc * zx + ms * zy;                        // zr
-    o[7] += -ms * zx + mc * zy;                       // zt
-    o[8] += m0 * zz;                                  // zz
+    o[4] += mss * xx - mcs * (xy + yx) + mcc * yy;       // tt
+    o[5] += -ms * xz + mc * yz;                          // tz
+    o[6] += mc * zx + ms * zy;                           // zr
+    o[7] += -ms * zx + mc * zy;                          // zt
+    o[8] += m0 * zz;                                     // zz
 }
 
 }  // namespace
