@@ -28,6 +28,17 @@ double radialMoment(const CgKernelShape& s, int d, int extra) {
 
 }  // namespace
 
+double shortInterval(const CgKernelShape& s, double p2, double a0, double a1) {
+    const auto& gl = gaussLegendre(4);
+    const double m = 0.5 * (a0 + a1), h = 0.5 * (a1 - a0);
+    double sum = 0.0;
+    for (int q = 0; q < 4; ++q) {
+        const double a = m + h * gl.x[q];
+        sum += gl.w[q] * s.shape(p2 + a * a);
+    }
+    return h * sum;
+}
+
 CgKernel::CgKernel(std::shared_ptr<const CgKernelShape> shape, int dims)
     : shape_(std::move(shape)), dims_(dims) {
     if (dims_ < 0 || dims_ > 3) fail("CgKernel: ", dims_, " resolved dimensions (expected 0..3)");

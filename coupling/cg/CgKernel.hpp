@@ -45,6 +45,11 @@ public:
     virtual std::unique_ptr<CgKernelShape> scaled(double factor) const = 0;
 };
 
+// int_a0^a1 f(sqrt(p2 + a^2)) da by 4-point Gauss-Legendre: for intervals
+// short against the cutoff (error ~ (length/width)^8), where closed forms
+// lose digits to cancellation.
+double shortInterval(const CgKernelShape& s, double p2, double a0, double a1);
+
 // The registry of kernel shapes: a kernel dictionary holds `type` (gauss,
 // heaviside, lucy), `width` [m] and, for gauss, `cutoff` (in widths).
 const Registry<CgKernelShape>& cgKernelShapes();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cg/GaussLegendre.hpp"
 #include "core/Error.hpp"
 
 namespace granair {
@@ -33,6 +34,12 @@ double GaussKernel::shapeLineIntegral(double p2, double a0, double a1) const {
     a0 = std::max(a0, -h);
     a1 = std::min(a1, h);
     if (a1 <= a0) return 0.0;
+    if (a1 - a0 < 1e-3 * c_) {
+        // A short interval (a contact nearly perpendicular to the resolved
+        // directions): 4-point Gauss-Legendre, where the erf difference
+        // would lose digits to cancellation.
+        return shortInterval(*this, p2, a0, a1);
+    }
     const double s = 1.0 / (std::sqrt(2.0) * w_);
     // erfc differences where both ends lie on one side keep full precision.
     double d;

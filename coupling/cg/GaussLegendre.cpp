@@ -2,7 +2,7 @@
 #include "cg/GaussLegendre.hpp"
 
 #include <cmath>
-#include <map>
+#include <array>
 #include <mutex>
 
 #include "core/Error.hpp"
@@ -52,12 +52,12 @@ GaussLegendreRule computeRule(int n) {
 
 const GaussLegendreRule& gaussLegendre(int n) {
     if (n < 1 || n > 200) fail("gaussLegendre: order ", n, " outside 1..200");
-    static std::mutex mutex;
-    static std::map<int, GaussLegendreRule> cache;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = cache.find(n);
-    if (it == cache.end()) it = cache.emplace(n, computeRule(n)).first;
-    return it->second;
+    // One rule per order, computed on first use; call_once is an atomic load
+    // afterwards (the rules are fetched in the snapshot loop).
+    static std::array<std::once_flag, 201> once;
+    static std::array<GaussLegendreRule, 201> rules;
+    std::call_once(once[n], [n] { rules[n] = computeRule(n); });
+    return rules[n];
 }
 
 }  // namespace granair

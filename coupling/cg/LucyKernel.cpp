@@ -43,6 +43,12 @@ double LucyKernel::shapeLineIntegral(double p2, double a0, double a1) const {
     a0 = std::max(a0, -h);
     a1 = std::min(a1, h);
     if (a1 <= a0) return 0.0;
+    if (a1 - a0 < 1e-3 * c_) {
+        // Short interval: Gauss-Legendre, split at a = 0 (the |x|^3 term),
+        // where the antiderivative difference would lose digits.
+        if (a0 < 0.0 && a1 > 0.0) return shortInterval(*this, p2, a0, 0.0) + shortInterval(*this, p2, 0.0, a1);
+        return shortInterval(*this, p2, a0, a1);
+    }
     return antiderivative(p2, a1) - antiderivative(p2, a0);
 }
 
