@@ -38,10 +38,14 @@ CgKernel makeKernel(const CgRunSettings& s, int dims) {
 }
 
 // Particle mass inside the window: centre within the box (Cartesian) or the
-// ring region (RZ).
+// ring region (RZ), positions wrapped into the box along periodic directions.
 double windowMass(const CgGrid& g, const CgSnapshot& snap) {
     double m = 0.0;
-    for (const auto& p : snap.particles) {
+    for (const auto& q : snap.particles) {
+        CgParticle p = q;
+        for (int a = 0; a < 3; ++a)
+            if (snap.domain.periodic[a] && snap.domain.period(a) > 0)
+                p.x[a] -= snap.domain.period(a) * std::floor((p.x[a] - snap.domain.box.lo[a]) / snap.domain.period(a));
         bool in;
         if (g.isCylindrical()) {
             const double r = std::hypot(p.x[0] - g.axisOrigin()[0], p.x[1] - g.axisOrigin()[1]);
