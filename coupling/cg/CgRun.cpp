@@ -234,7 +234,14 @@ CgRunResult runCg(const CgRunSettings& s, std::ostream& log) {
     for (bool r : cgResolvedAxes(s.coordinates)) dims += r;
     if (s.coordinates == CgCoordinates::RZ) dims = 3;  // the kernel acts in 3-D
     CgKernel kernel = makeKernel(s, dims);
-    const CgGrid grid = makeCgGrid(s, first.domain, kernel.standardDeviation());
+    const CgGrid grid = [&] {
+        try {
+            return makeCgGrid(s, first.domain, kernel.standardDeviation());
+        } catch (const InputError& e) {
+            fail<InputError>("the grid (--coordinates, --min/--max or the dump's box, --n or --spacing, RZ: "
+                             "--axis/--rmin/--rmax): ", e.what());
+        }
+    }();
     const CoarseGrainer cg(grid, kernel, s.azimuthalNodes);
 
     log.precision(6);
