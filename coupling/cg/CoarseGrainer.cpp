@@ -132,19 +132,43 @@ void addSegmentRing(const CgKernel& k3, const Vec3& axis, const cgterms::Segment
             const double along = d.dot(seg3.u);
             return d.squaredNorm() - along * along - c * c;
         };
-        constexpr int samples = 24;
-        double fPrev = cylinder(t0), tPrev = t0;
+        // f = p^2 - c^2 at (cos t, sin t): sampled by a rotation recurrence
+        // (no sine or cosine per sample), refined with the exact function.
+        auto cylinderCS = [&](double cs, double sn) {
+            const Vec3 d(axis[0] + r * cs - a[0], axis[1] + r * sn - a[1], z - a[2]);
+            const double along = d.dot(seg3.u);
+            return d.squaredNorm() - along * along - c * c;
+        };
+        constexpr int samples = 16;
+        const double step = (t1 - t0) / samples, cStep = std::cos(step), sStep = std::sin(step);
+        double cs = std::cos(t0), sn = std::sin(t0);
+        double fPrev = cylinderCS(cs, sn), tPrev = t0;
         for (int q = 1; q <= samples; ++q) {
-            const double t = t0 + (t1 - t0) * q / samples;
-            const double f = cylinder(t);
+            const double t = t0 + step * q;
+            const double c1 = cs * cStep - sn * sStep;
+            sn = sn * cStep + cs * sStep, cs = c1;
+            const double f = cylinderCS(cs, sn);
             if ((f > 0.0) != (fPrev > 0.0)) {
-                double lo = tPrev, hi = t;
-                const bool loPositive = fPrev > 0.0;
-                for (int it = 0; it < 52 && hi - lo > 1e-15 * (1.0 + std::abs(lo)); ++it) {
-                    const double m = 0.5 * (lo + hi);
-                    ((cylinder(m) > 0.0) == loPositive ? lo : hi) = m;
+                // Illinois (regula falsi that halves the stale end's value):
+                // superlinear, a few steps to 1e-9 rad (a break that far off
+                // the sqrt-type edge costs ~(1e-9)^1.5 of the integral).
+                double a0 = tPrev, fa = fPrev, b0 = t, fb = f;
+                int side = 0;
+                for (int it = 0; it < 30 && std::abs(b0 - a0) > 1e-9; ++it) {
+                    const double m = (a0 * fb - b0 * fa) / (fb - fa);
+                    const double fm = cylinder(m);
+                    if ((fm > 0.0) == (fb > 0.0)) {
+                        b0 = m, fb = fm;
+                        if (side == -1) fa *= 0.5;
+                        side = -1;
+                    } else {
+                        a0 = m, fa = fm;
+                        if (side == 1) fb *= 0.5;
+                        side = 1;
+                    }
+                    if (fm == 0.0) a0 = b0 = m;
                 }
-                br.push_back(0.5 * (lo + hi));
+                br.push_back(0.5 * (a0 + b0));
             }
             fPrev = f, tPrev = t;
         }
@@ -152,8 +176,7 @@ void addSegmentRing(const CgKernel& k3, const Vec3& axis, const cgterms::Segment
     std::sort(br.begin(), br.end());
     const auto& gl = gaussLegendre(segmentPieceNodes);
     double m0 = 0, mc = 0, ms = 0, mcc = 0, mcs = 0, mss = 0;
-    auto node = [&](double th, double wq) {
-        const double cs = std::cos(th), sn = std::sin(th);
+    auto node = [&](double cs, double sn, double wq) {
         const Vec3 X(axis[0] + r * cs, axis[1] + r * sn, z);
         const double f = wq * cgterms::segmentWeight(k3, seg3, X);
         if (f == 0.0) return;
@@ -164,6 +187,26 @@ void addSegmentRing(const CgKernel& k3, const Vec3& axis, const cgterms::Segment
         mcs += f * cs * sn;
         mss += f * sn * sn;
     };
+    // Node offsets within a sub-panel of width h and their weights, for the
+    // three kinds: cosine map to the left end, plain, cosine map to the right
+    // end (and both ends when a piece is one sub-panel); the node angles are
+    // then built by angle addition from the sub-panel's start.
+    struct Pattern {
+        double off[segmentPieceNodes], w[segmentPieceNodes], co[segmentPieceNodes], si[segmentPieceNodes];
+    };
+    auto pattern = [&](int kind, double h) {
+        Pattern pt;
+        for (int q = 0; q < segmentPieceNodes; ++q) {
+            const double tau = 0.5 * M_PI * (gl.x[q] + 1.0);
+            if (kind == 0) pt.off[q] = h * (1.0 - std::cos(0.5 * tau)), pt.w[q] = gl.w[q] * 0.25 * M_PI * h * std::sin(0.5 * tau);
+            else if (kind == 1) pt.off[q] = 0.5 * h * (gl.x[q] + 1.0), pt.w[q] = 0.5 * h * gl.w[q];
+            else if (kind == 2) pt.off[q] = h * std::sin(0.5 * tau), pt.w[q] = gl.w[q] * 0.25 * M_PI * h * std::cos(0.5 * tau);
+            else pt.off[q] = 0.5 * h * (1.0 - std::cos(tau)), pt.w[q] = gl.w[q] * 0.25 * M_PI * h * std::sin(tau);
+            pt.co[q] = std::cos(pt.off[q]);
+            pt.si[q] = std::sin(pt.off[q]);
+        }
+        return pt;
+    };
     for (std::size_t p = 0; p + 1 < br.size(); ++p) {
         const double len = br[p + 1] - br[p];
         if (!(len > 0.0)) continue;
@@ -172,23 +215,15 @@ void addSegmentRing(const CgKernel& k3, const Vec3& axis, const cgterms::Segment
         // support's edge at one side) in the cosine map.
         const int m = std::max({1, int(std::ceil(r * len / (segmentPanelArc * c))), int(std::ceil(len / (0.5 * M_PI)))});
         const double h = len / m;
+        const Pattern first = pattern(m == 1 ? 3 : 0, h);
+        const Pattern middle = m > 2 ? pattern(1, h) : first;
+        const Pattern last = m > 1 ? pattern(2, h) : first;
         for (int sp = 0; sp < m; ++sp) {
             const double lo = br[p] + sp * h;
-            for (int q = 0; q < segmentPieceNodes; ++q) {
-                if (sp == 0 || sp == m - 1) {
-                    // cos map towards the piece end(s) this sub-panel holds
-                    const double tau = 0.5 * M_PI * (gl.x[q] + 1.0);
-                    if (m == 1) {
-                        node(lo + 0.5 * h * (1.0 - std::cos(tau)), gl.w[q] * 0.25 * M_PI * h * std::sin(tau));
-                    } else if (sp == 0) {  // end at lo: x = lo + h (1 - cos(tau/2))
-                        node(lo + h * (1.0 - std::cos(0.5 * tau)), gl.w[q] * 0.25 * M_PI * h * std::sin(0.5 * tau));
-                    } else {  // end at lo + h
-                        node(lo + h * std::sin(0.5 * tau), gl.w[q] * 0.25 * M_PI * h * std::cos(0.5 * tau));
-                    }
-                } else {
-                    node(lo + 0.5 * h * (gl.x[q] + 1.0), 0.5 * h * gl.w[q]);
-                }
-            }
+            const Pattern& pt = sp == 0 ? first : sp == m - 1 ? last : middle;
+            const double c0 = std::cos(lo), s0 = std::sin(lo);
+            for (int q = 0; q < segmentPieceNodes; ++q)
+                node(c0 * pt.co[q] - s0 * pt.si[q], s0 * pt.co[q] + c0 * pt.si[q], pt.w[q]);
         }
     }
     if (m0 == 0.0) return;
@@ -218,6 +253,7 @@ CoarseGrainer::CoarseGrainer(CgGrid grid, CgKernel kernel, int azimuthalNodes)
     if (azimuthalNodes_ < 2 || azimuthalNodes_ > 200)
         fail<InputError>("CG: ", azimuthalNodes_, " azimuthal nodes, expected 2 to 200");
     slabAxis_ = grid_.count(2) > 1 ? 2 : grid_.count(1) > 1 ? 1 : 0;
+    resolved_ = cgResolvedAxes(grid_.coordinates());
 }
 
 std::vector<CoarseGrainer::Copy> CoarseGrainer::copies(const CgSnapshot& snap, bool gridOnly) const {
@@ -397,7 +433,7 @@ void CoarseGrainer::deposit(const Copy& cp, const CgSnapshot& snap, int slabLo, 
 
 void CoarseGrainer::apply(const Prepared& p, const Vec3& point, double* rec) const {
     if (!grid_.isCylindrical()) {
-        const auto res = cgResolvedAxes(grid_.coordinates());
+        const auto& res = resolved_;
         Vec3 g = Vec3::Zero();
         for (int a = 0; a < 3; ++a)
             if (res[a]) g[a] = point[a];

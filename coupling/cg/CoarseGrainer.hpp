@@ -20,6 +20,7 @@
 // particles, exact to round-off; composite rules for contact segments, whose
 // accuracy the tests state).
 #pragma once
+#include <array>
 #include <vector>
 
 #include "cg/CgGrid.hpp"
@@ -63,6 +64,7 @@ private:
     CgKernel kernel_;
     int azimuthalNodes_;
     int slabAxis_;
+    std::array<bool, 3> resolved_;
 };
 
 }  // namespace granair
