@@ -8,6 +8,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "cg/CgAverager.hpp"
 #include "cg/CgFields.hpp"
 #include "cg/CgKernel.hpp"
 #include "cg/CgWriters.hpp"
@@ -288,16 +289,14 @@ CgRunResult runCg(const CgRunSettings& s, std::ostream& log) {
         result.files.push_back(s.out + "_series.csv");
     }
     std::vector<std::pair<double, std::string>> pvd;
-    CgRawFields sum(grid.size());
+    CgAverager average(cg, s.threads);
     for (std::size_t c = 0; c < chosen.size(); ++c) {
         const std::size_t k = chosen[c];
         const auto t0 = clock::now();
         const CgSnapshot snap = c == 0 ? first : reader.read(steps[k]);
         const auto t1 = clock::now();
-        CgCounts counts;
-        const CgRawFields raw = cg.compute(snap, s.threads, &counts);
+        const CgRawFields raw = average.add(snap, weights[k]);
         const auto t2 = clock::now();
-        sum.addScaled(raw, weights[k]);
         result.windowMass += weights[k] * windowMass(grid, snap);
         if (s.every || series) {
             const auto fields = cgFields(grid, raw, fopt);
@@ -319,9 +318,9 @@ CgRunResult runCg(const CgRunSettings& s, std::ostream& log) {
         log.flush();
     }
     result.snapshots = chosen.size();
-    result.gridMass = gridMass(grid, sum);
+    result.gridMass = gridMass(grid, average.raw());
     attrs.push_back({"snapshots", std::to_string(chosen.size())});
-    writeAll(s.out, cgFields(grid, sum, fopt), attrs);
+    writeAll(s.out, average.fields(fopt), attrs);
     if (s.every && has("vti")) {
         writeCgPvd(s.out + ".pvd", pvd);
         result.files.push_back(s.out + ".pvd");

@@ -6,8 +6,9 @@
 // with k = c/w, so the integral is 1 exactly, not 1 - O(exp(-k^2/2)).
 // Line integral (exact): for h^2 = c^2 - p2 > 0 and [a0, a1] clipped to [-h, h],
 //     exp(-p2/(2 w^2)) sqrt(pi/2) w [erf(a1/(sqrt 2 w)) - erf(a0/(sqrt 2 w))].
-// Standard deviation per axis: w for a large cutoff; 0.9733 w in 3-D at k = 3
-// (the truncation narrows it), 0.9889 w in 2-D, 0.9869 w in 1-D (CgKernel computes it).
+// Standard deviation per axis: w for a large cutoff; at k = 3 the truncation
+// narrows it to 0.9580 w in 3-D, 0.9744 w in 2-D, 0.9866 w in 1-D (CgKernel
+// computes it; MercuryCG's setStandardDeviation uses the untruncated w).
 //
 // Parameters: width w [m] > 0 (required); cutoff k = c/w in widths,
 // 1 <= k <= 10, default 3 (MercuryCG's default).

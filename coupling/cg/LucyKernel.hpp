@@ -7,7 +7,8 @@
 // s = sqrt(a^2 + p2), the antiderivative of f(s/c) in a is
 //     a - 6 (p2 a + a^3/3)/c^2 - 3 (p2^2 a + 2 p2 a^3/3 + a^5/5)/c^4
 //       + 8 [a (2a^2 + 5 p2) s/8 + 3 p2^2 asinh(a/sqrt p2)/8]/c^3.
-// Standard deviation per axis 0.2988 c in 3-D (CgKernel computes it).
+// Standard deviation per axis c/sqrt(12) = 0.2887 c in 3-D, 0.2988 c in 2-D,
+// 0.3086 c in 1-D (CgKernel computes it).
 //
 // Parameters: width = the cutoff radius c [m] > 0 (required), as MercuryCG.
 //

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "CgTestSupport.hpp"
+#include "cg/CgAverager.hpp"
 #include "core/Error.hpp"
 
 using namespace granair;
@@ -145,4 +146,22 @@ TEST_CASE("CG grid: bad grids are refused naming what is wrong", "[cg][grid]") {
     // a kernel of the wrong dimension is a programming error, not input
     CHECK_THROWS_AS(CoarseGrainer(CgGrid(CgCoordinates::XZ, box, {{4, 1, 4}}), CgKernel(shape("gauss", 1e-3), 3)),
                     Error);
+}
+
+TEST_CASE("CG averager: a weighted sum of snapshots, then the fields", "[cg][grid]") {
+    const CoarseGrainer cg(CgGrid(CgCoordinates::Z, Box{Vec3::Zero(), Vec3::Constant(L)}, {{1, 1, 16}}),
+                           CgKernel(shape("lucy", 2e-3), 1));
+    CgSnapshot a = randomSnapshot(3), b = randomSnapshot(4);
+    a.hasSpin = true;
+    CgAverager avg(cg, 1);
+    avg.add(a, 0.25);
+    avg.add(b, 0.75);
+    CHECK(avg.weight() == 1.0);
+    const CgRawFields fa = cg.compute(a, 1), fb = cg.compute(b, 1);
+    for (std::size_t k = 0; k < fa.data.size(); ++k)
+        CHECK(avg.raw().data[k] == Approx(0.25 * fa.data[k] + 0.75 * fb.data[k]).margin(1e-300).epsilon(1e-14));
+    const auto f = avg.fields();
+    CHECK_NOTHROW(cgField(f, "spin"));  // a snapshot had omega
+    for (std::size_t p = 0; p < cg.grid().size(); ++p)
+        CHECK(cgField(f, "density").values[p] == avg.raw().at(p)[cgraw::density]);
 }
