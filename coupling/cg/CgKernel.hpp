@@ -22,6 +22,8 @@
 //     sigma^2 = (1/D) int |x|^2 psi dV,
 // with CgKernel::widthForStandardDeviation.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -44,6 +46,17 @@ public:
     // The same shape with every length scaled by `factor` (for a standard deviation).
     virtual std::unique_ptr<CgKernelShape> scaled(double factor) const = 0;
 };
+
+// Clip [a0, a1] to the chord [-h, h] of the support ball (radius c) at
+// squared distance p2 from its centre; false when nothing is left.
+inline bool clipToSupport(double c, double p2, double& a0, double& a1) {
+    const double h2 = c * c - p2;
+    if (h2 <= 0.0) return false;
+    const double h = std::sqrt(h2);
+    a0 = std::max(a0, -h);
+    a1 = std::min(a1, h);
+    return a1 > a0;
+}
 
 // int_a0^a1 f(sqrt(p2 + a^2)) da by 4-point Gauss-Legendre: for intervals
 // short against the cutoff (error ~ (length/width)^8), where closed forms

@@ -12,6 +12,7 @@
 
 #include "core/Error.hpp"
 #include "output/FormatExact.hpp"
+#include "output/Hdf5Util.hpp"
 
 namespace granair {
 
@@ -132,40 +133,13 @@ void writeCgPvd(const std::string& path, const std::vector<std::pair<double, std
 
 namespace {
 
-class Hdf5 {
-public:
-    Hdf5() {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    }
-    ~Hdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-
-private:
-    H5E_auto2_t func_ = nullptr;
-    void* data_ = nullptr;
-};
-
-bool stringAttribute(hid_t obj, const std::string& name, const std::string& value) {
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    const hid_t space = H5Screate(H5S_SCALAR);
-    bool ok = type >= 0 && space >= 0 && H5Tset_size(type, value.size() + 1) >= 0;
-    if (ok) {
-        const hid_t at = H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-        ok = at >= 0 && H5Awrite(at, type, value.c_str()) >= 0;
-        if (at >= 0) H5Aclose(at);
-    }
-    if (space >= 0) H5Sclose(space);
-    if (type >= 0) H5Tclose(type);
-    return ok;
-}
-
 bool dataset(hid_t file, const std::string& name, const std::vector<hsize_t>& dims, const double* values,
              const std::string& unit) {
     const hid_t space = H5Screate_simple(int(dims.size()), dims.data(), nullptr);
     if (space < 0) return false;
     const hid_t ds = H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     bool ok = ds >= 0 && H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) >= 0;
-    if (ok && !unit.empty()) ok = stringAttribute(ds, "unit", unit);
+    if (ok && !unit.empty()) ok = writeStringAttribute(ds, "unit", unit);
     if (ds >= 0) H5Dclose(ds);
     H5Sclose(space);
     return ok;
@@ -175,11 +149,11 @@ bool dataset(hid_t file, const std::string& name, const std::vector<hsize_t>& di
 
 void writeCgHdf5(const std::string& path, const CgGrid& grid, const std::vector<CgField>& fields,
                  const CgAttributes& attributes) {
-    Hdf5 quiet;
+    QuietHdf5 quiet;
     const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (file < 0) fail<InputError>("cannot write CG HDF5 file '", path, "'");
     bool ok = true;
-    for (const auto& a : attributes) ok = ok && stringAttribute(file, a.first, a.second);
+    for (const auto& a : attributes) ok = ok && writeStringAttribute(file, a.first.c_str(), a.second);
     const auto axes = resolvedAxes(grid);
     const auto comp = grid.componentNames();
     std::vector<hsize_t> shape;

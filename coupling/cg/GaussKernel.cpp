@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cg/GaussLegendre.hpp"
 #include "core/Error.hpp"
 
 namespace granair {
@@ -28,12 +27,7 @@ double GaussKernel::shape(double rho2) const {
 }
 
 double GaussKernel::shapeLineIntegral(double p2, double a0, double a1) const {
-    const double h2 = c_ * c_ - p2;
-    if (h2 <= 0.0) return 0.0;
-    const double h = std::sqrt(h2);
-    a0 = std::max(a0, -h);
-    a1 = std::min(a1, h);
-    if (a1 <= a0) return 0.0;
+    if (!clipToSupport(c_, p2, a0, a1)) return 0.0;
     if (a1 - a0 < 1e-3 * c_) {
         // A short interval (a contact nearly perpendicular to the resolved
         // directions): 4-point Gauss-Legendre, where the erf difference

@@ -19,10 +19,8 @@ std::unique_ptr<CgKernelShape> HeavisideKernel::fromDict(const Dictionary& dict)
 }
 
 double HeavisideKernel::shapeLineIntegral(double p2, double a0, double a1) const {
-    const double h2 = c_ * c_ - p2;
-    if (h2 <= 0.0) return 0.0;
-    const double h = std::sqrt(h2);
-    return std::max(0.0, std::min(a1, h) - std::max(a0, -h));
+    if (!clipToSupport(c_, p2, a0, a1)) return 0.0;
+    return a1 - a0;
 }
 
 std::unique_ptr<CgKernelShape> HeavisideKernel::scaled(double factor) const {

@@ -37,12 +37,7 @@ double LucyKernel::antiderivative(double p2, double a) const {
 }
 
 double LucyKernel::shapeLineIntegral(double p2, double a0, double a1) const {
-    const double h2 = c_ * c_ - p2;
-    if (h2 <= 0.0) return 0.0;
-    const double h = std::sqrt(h2);
-    a0 = std::max(a0, -h);
-    a1 = std::min(a1, h);
-    if (a1 <= a0) return 0.0;
+    if (!clipToSupport(c_, p2, a0, a1)) return 0.0;
     if (a1 - a0 < 1e-3 * c_) {
         // Short interval: Gauss-Legendre, split at a = 0 (the |x|^3 term),
         // where the antiderivative difference would lose digits.
