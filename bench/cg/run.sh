@@ -64,11 +64,11 @@ def ratio(a, b, key):
 if len(same) >= 2:
     a, b = same[0], same[-1]
     md.write(f"- Particles and grid points together (same resolution): x{ratio(a, b, 'particles'):.1f} "
-             f"-> time x{ratio(a, b, 'seconds'):.1f} (linear).\n")
+             f"-> CPU time x{ratio(a, b, 'cpu_seconds'):.1f} (linear).\n")
 if len(fixed) >= 2:
     a, b = fixed[0], fixed[-1]
-    md.write(f"- Grid points at {h['particles']} particles: x{ratio(a, b, 'grid_points'):.1f} -> time "
-             f"x{ratio(a, b, 'seconds'):.1f} (points per cutoff ball grow with them; a per-object part stays).\n")
+    md.write(f"- Grid points at {h['particles']} particles: x{ratio(a, b, 'grid_points'):.1f} -> CPU time "
+             f"x{ratio(a, b, 'cpu_seconds'):.1f} (points per cutoff ball grow with them; a per-object part stays).\n")
 two = [r for r in rows if r["threads"] == "2"]
 if two:
     md.write(f"- 2 threads: {float(two[0]['seconds']):.3g} s wall and {float(two[0]['cpu_seconds']):.3g} CPU-s "
