@@ -17,6 +17,7 @@
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
 #include "output/FormatExact.hpp"
+#include "output/Hdf5Util.hpp"
 
 namespace granair {
 
@@ -24,40 +25,6 @@ namespace {
 
 // Rows per HDF5 chunk: a long run appends many rows, one at a time.
 constexpr hsize_t chunkRows = 256;
-
-// HDF5 prints its error stack to stderr by default; we turn failures into
-// exceptions with our own message instead, so silence it while we work.
-class QuietHdf5 {
-public:
-    QuietHdf5() {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    }
-    ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-    QuietHdf5(const QuietHdf5&) = delete;
-    QuietHdf5& operator=(const QuietHdf5&) = delete;
-
-private:
-    H5E_auto2_t func_ = nullptr;
-    void* data_ = nullptr;
-};
-
-// Fixed-length, null-terminated string attribute on an HDF5 object.
-bool writeStringAttribute(hid_t object, const char* name, const std::string& value) {
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    const hid_t space = H5Screate(H5S_SCALAR);
-    bool ok = type >= 0 && space >= 0 && H5Tset_size(type, value.size() + 1) >= 0 &&
-              H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0;
-    if (ok) {
-        const hid_t attr = H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-        ok = attr >= 0 && H5Awrite(attr, type, value.c_str()) >= 0;
-        if (attr >= 0) H5Aclose(attr);
-    }
-    if (space >= 0) H5Sclose(space);
-    if (type >= 0) H5Tclose(type);
-    return ok;
-}
-
 
 void checkColumns(const std::string& stem, const std::vector<Column>& columns) {
     if (columns.empty()) fail<InputError>("time series '", stem, "': no columns given");
