@@ -127,12 +127,12 @@ inline std::vector<OwnedParticle> expectedOwned(const std::vector<const CellLoca
 }
 
 // Number of mismatches between two owned lists (ids, states bit for bit, cells).
-inline int countMismatches(const std::vector<OwnedParticle>& got, const std::vector<OwnedParticle>& want) {
+inline int countMismatches(const granair::OwnedParticles& got, const std::vector<OwnedParticle>& want) {
     int bad = static_cast<int>(std::max(got.size(), want.size()) - std::min(got.size(), want.size()));
     for (std::size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
-        const ParticleState &a = got[i].state, &b = want[i].state;
+        const ParticleState &a = got.state(i), &b = want[i].state;
         bad += !(a.id == b.id && a.x == b.x && a.v == b.v && a.radius == b.radius &&
-                 got[i].cell == want[i].cell);
+                 got.cell(i) == want[i].cell);
     }
     return bad;
 }

@@ -36,7 +36,7 @@ TEST_CASE("every particle reaches exactly the rank whose cells contain it, and c
     const BoxMesh& mesh = slabs[rank];
 
     ParticleExchange ex(MPI_COMM_WORLD, mesh);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     std::vector<double> values, out;
     // Several coupling steps with moving particles: buffers are reused and
     // consecutive NBX rounds follow each other closely.
@@ -89,7 +89,7 @@ TEST_CASE("drag forces go home once each and conserve momentum to round-off", "[
 
     ParticleExchange ex(MPI_COMM_WORLD, mesh);
     const auto dem = demParticles(rank, size, 1);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     ex.forward(dem, owned);
 
     // CFD side: force on each particle, minus the force into its cell's
@@ -166,7 +166,7 @@ TEST_CASE("a point found by two ranks (closed cells) is owned once, by the lower
     if (size > 1) CHECK(globalSum(ties) == 10 * size * (size - 1) + 1);
 
     ParticleExchange ex(MPI_COMM_WORLD, slabs[rank]);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     ex.forward(dem, owned);
     // expectedOwned gives each particle to its LOWEST finder.
     CHECK(countMismatches(owned, expectedOwned(meshes, rank, 0)) == 0);
