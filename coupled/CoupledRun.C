@@ -7,6 +7,7 @@
 #include "core/Error.hpp"
 #include "monitor/Progress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -175,6 +176,19 @@ void CoupledRun::mapParticles()
     }
     StageTimers::Scope s(timers_, StageTimers::Mapping);
     const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
+    if (settings_.oneWay)
+    {
+        // The air keeps eps = 1, Ksl = 0, Us = 0 (its initial values).
+        const std::size_t n = std::size_t(mesh_.nCells());
+        particleEps_.resize(n);
+        particleKsl_.resize(n);
+        particleUs_.resize(3*n);
+        step_->particlesToCells
+        (
+            owned_, U, particleEps_.data(), particleKsl_.data(), particleUs_.data()
+        );
+        return;
+    }
     step_->particlesToCells
     (
         owned_, U,
@@ -208,23 +222,23 @@ volScalarField& CoupledRun::voidFraction()
 }
 
 
-void CoupledRun::coupleAir()
+void CoupledRun::solveAir()
 {
-    mapParticles();
-    floorHitsTotal_ += step_->stats().floorHits;
-    minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
+    StageTimers::Scope s(timers_, StageTimers::CFD);
+    // OpenFOAM's per-iteration solver lines would drown the progress
+    // line; `airSolverLog on;` in couplingProperties keeps them.
+    const int level = messageStream::level;
+    if (!run_.airSolverLog)
     {
-        StageTimers::Scope s(timers_, StageTimers::CFD);
-        // OpenFOAM's per-iteration solver lines would drown the progress
-        // line; `airSolverLog on;` in couplingProperties keeps them.
-        const int level = messageStream::level;
-        if (!run_.airSolverLog)
-        {
-            messageStream::level = 0;
-        }
-        air_->solveStep();
-        messageStream::level = level;
+        messageStream::level = 0;
     }
+    air_->solveStep();
+    messageStream::level = level;
+}
+
+
+void CoupledRun::forcesToDem()
+{
     {
         StageTimers::Scope s(timers_, StageTimers::Mapping);
         // The air's own pressure gradient (Gauss on its face pressure): at a
@@ -248,6 +262,16 @@ void CoupledRun::coupleAir()
 }
 
 
+void CoupledRun::coupleAir()
+{
+    mapParticles();
+    floorHitsTotal_ += step_->stats().floorHits;
+    minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
+    solveAir();
+    forcesToDem();
+}
+
+
 void CoupledRun::run()
 {
     ::granair::Progress progress(tStart_, runTime_.endTime().value());
@@ -264,9 +288,12 @@ void CoupledRun::run()
     // pressure kick many times the particles' weight. It is written to the
     // start time directory (replacing any 0/voidfraction given): the bed
     // the run starts from, in the same model and floor as every later field.
+    //   With the air on, the particles also get their fluid force from the
+    // initial air fields now, for the first interval of DEM steps.
     if (air_)
     {
         mapParticles();
+        forcesToDem();
     }
     else
     {
@@ -336,9 +363,9 @@ void CoupledRun::writeParticles(label k)
     {
         return;
     }
-    // The fluid force of this coupling step (zero at the start and with the
-    // air off), in the order of particles_.
-    const bool haveForces = air_ && k > 0 && demForces_.size() == 3*particles_.size();
+    // The fluid force of this coupling step (at the start: from the initial
+    // air; zero with the air off), in the order of particles_.
+    const bool haveForces = air_ && demForces_.size() == 3*particles_.size();
     particleVtk_->write(t, particles_, haveForces ? demForces_.data() : nullptr, particles_.size());
     vtkNext_ = label(std::floor((t - tStart_ + tol)/run_.vtkInterval)) + 1;
 }
@@ -356,7 +383,14 @@ void CoupledRun::writeParticles(label k)
     r.particles = double(dem_->nGlobal());
     if (air_)
     {
-        r.voidFractionMin = gMin(air_->eps().primitiveField());
+        r.voidFractionMin = settings_.oneWay
+            ? returnReduce
+              (
+                  particleEps_.empty()
+                ? 1.0 : *std::min_element(particleEps_.begin(), particleEps_.end()),
+                  minOp<scalar>()
+              )
+            : gMin(air_->eps().primitiveField());
         r.floorHits = double(returnReduce(label(step_->stats().floorHits), sumOp<label>()));
         monitors_->values(*air_, r.monitors);
     }
