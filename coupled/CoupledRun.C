@@ -27,6 +27,17 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
     settings_(::granair::CouplingSettings::read(dict_)),
     run_(::granair::RunSettings::read(dict_))
 {
+    // Every reader of couplingProperties has read it (the monitors too):
+    // a key nobody asked for is a misspelling, stop before any work.
+    if (settings_.airOn)
+    {
+        monitors_ = std::make_unique<MonitorSet>(mesh_, dict_);
+    }
+    else
+    {
+        dict_.allow({"monitors"});   // air monitors: nothing to monitor
+    }
+    dict_.checkKnownKeys();
     openDem();
     checkTimeSteps();
     openCfd();
@@ -96,7 +107,6 @@ void CoupledRun::openCfd()
         (
             settings_, *locator_, ::granair::FluidProperties{air_->rho(), air_->mu()}
         );
-        monitors_ = std::make_unique<MonitorSet>(mesh_, dict_);
         // The coupling fields go to the time directories with U and p (only
         // at the controlDict write times, so it costs nothing in between).
         air_->Ksl().writeOpt() = IOobject::AUTO_WRITE;
