@@ -5,6 +5,7 @@
 
 #include "core/CapacityBytes.hpp"
 #include "core/Error.hpp"
+#include "core/StopSignal.hpp"
 #include "monitor/Progress.hpp"
 
 #include <algorithm>
@@ -317,7 +318,8 @@ void CoupledRun::run()
             writeParticles(0);
         }
     }
-    for (label k = 1; k <= nSteps_; ++k)
+    stopSignal_ = ::granair::StopSignal::received(MPI_COMM_WORLD);
+    for (label k = 1; k <= nSteps_ && !stopSignal_; ++k)
     {
         {
             StageTimers::Scope s(timers_, StageTimers::DEM);
@@ -354,12 +356,33 @@ void CoupledRun::run()
             }
         }
         resources_.addStep(series_->last().particles, settings_.couplingInterval);
+        stepsDone_ = k;
+        stopSignal_ = ::granair::StopSignal::received(MPI_COMM_WORLD);
         progress.update
         (
-            runTime_.value(), long(dem_->step()), progressExtra(series_->last()), std::cout, k == nSteps_
+            runTime_.value(), long(dem_->step()), progressExtra(series_->last()), std::cout,
+            k == nSteps_ || stopSignal_
         );
     }
+    if (stopSignal_)
+    {
+        writeStopPoint();
+    }
     resources_.stopLoop();
+}
+
+
+void CoupledRun::writeStopPoint()
+{
+    StageTimers::Scope s(timers_, StageTimers::Output);
+    if (!runTime_.writeTime())
+    {
+        if (!air_)
+        {
+            mapVoidFraction();
+        }
+        runTime_.writeNow();
+    }
 }
 
 
@@ -459,7 +482,17 @@ void CoupledRun::finish()
             << "Air continuity error (cumulative): " << air_->cumulativeContinuityError() << "\n";
     }
     timers_.report(MPI_COMM_WORLD, os);
-    resources_.report(MPI_COMM_WORLD, long(nSteps_), bufferBytes(), os);
+    resources_.report(MPI_COMM_WORLD, long(stepsDone_), bufferBytes(), os);
+    if (stopSignal_)
+    {
+        os  << "\ngranairFoam: stopped by " << ::granair::StopSignal::name(stopSignal_) << " at t = "
+            << runTime_.value() << " s, after coupling step " << stepsDone_ << " of " << nSteps_
+            << " (end time " << runTime_.endTime().value() << " s).\n"
+            << "  The outputs are complete up to that time: postProcessing/timeSeries.{csv,h5} have every "
+            << "step to t = " << runTime_.value() << " s, and the fields of t = " << runTime_.timeName()
+            << " are written.\n"
+            << "  Exit code " << ::granair::StopSignal::exitCode(stopSignal_) << ".\n";
+    }
     Info<< os.str().c_str() << endl;
 }
 
