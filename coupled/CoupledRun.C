@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -39,6 +41,7 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
         dict_.allow({"monitors"});   // air monitors: nothing to monitor
     }
     dict_.checkKnownKeys();
+    restart_ = findRestart();
     openDem();
     checkTimeSteps();
     openCfd();
@@ -50,12 +53,82 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
 CoupledRun::~CoupledRun() = default;
 
 
+bool CoupledRun::findRestart()
+{
+    const fileName caseDir = runTime_.globalPath();
+    const fileName dir = restartDirectory(caseDir, runTime_.timeName());
+    const double t = runTime_.value(), tol = 1e-6*runTime_.deltaTValue();
+    if (isFile(dir/"coupling"))
+    {
+        restartState_ = RestartState::read(dir/"coupling");
+        if (std::abs(restartState_.time - t) > tol)
+        {
+            ::granair::fail<::granair::CollectiveError>
+            (
+                "restart: ", dir/"coupling", " is the restart point of t = ", restartState_.time,
+                " s, but system/controlDict starts at t = ", t, " s (was the directory copied or renamed?)"
+            );
+        }
+        return true;
+    }
+    if (isDir(dir))
+    {
+        ::granair::fail<::granair::CollectiveError>
+        (
+            "restart: ", dir, " has no 'coupling' file: the restart point of t = ", t,
+            " s is incomplete (the run ended while writing it); start from an earlier write time"
+        );
+    }
+    // No restart point: a fresh start. One at a time an earlier run of this
+    // case passed would overwrite its time series and start the DEM from
+    // the script's particles, not those of that time.
+    std::ifstream csv(caseDir/"postProcessing"/"timeSeries.csv");
+    std::string line;
+    std::getline(csv, line);
+    bool first = true;
+    while (std::getline(csv, line))
+    {
+        const double tRow = std::strtod(line.c_str(), nullptr);
+        if (!first && std::abs(tRow - t) <= tol)
+        {
+            ::granair::fail<::granair::CollectiveError>
+            (
+                "system/controlDict starts at t = ", t, " s, a time an earlier run of this case passed ",
+                "(postProcessing/timeSeries.csv has a row there), but there is no restart point ", dir,
+                "/: granairFoam writes one with every field write time. Start from a time that has ",
+                "one (ls ", caseDir/"restart", "), or remove postProcessing/timeSeries.* to start afresh"
+            );
+        }
+        first = false;
+    }
+    return false;
+}
+
+
 void CoupledRun::openDem()
 {
     // The case's LIGGGHTS script sets everything up, with no coupled run.
+    // A restart runs the restart script with ${granair_restart}, the
+    // LIGGGHTS restart file of the restart point (an index variable: a
+    // script's own `variable granair_restart index ...` does not override it).
     const fileName caseDir = runTime_.globalPath();
     dem_ = std::make_unique<::granair::dem::LiggghtsDriver>(MPI_COMM_WORLD, caseDir/"log");
-    dem_->runFile(caseDir/run_.demScript);
+    if (restart_)
+    {
+        dem_->command
+        (
+            "variable granair_restart index "
+          + restartDirectory(caseDir, runTime_.timeName()) + "/dem.restart"
+        );
+    }
+    dem_->runFile(caseDir/(restart_ ? run_.demRestartScript : run_.demScript));
+    if (restart_)
+    {
+        checkRestartedDem();
+        dem_->alignTime(restartState_.demTime);
+    }
+    // The fluid force and discharge state fixes: after a restart they take
+    // their per-particle values back from LIGGGHTS' restart file.
     if (settings_.airOn)
     {
         dem_->enableFluidForces();
@@ -65,6 +138,44 @@ void CoupledRun::openDem()
         const ::granair::DischargeSettings& d = *run_.discharge;
         discharge_ = std::make_unique<::granair::dem::DischargeCounter>(*dem_, d.outletZ, d.sinkZ);
         massFlow_ = std::make_unique<::granair::MassFlowRate>(d.massFlowWindow);
+        if (restart_)
+        {
+            if (!restartState_.discharge)
+            {
+                ::granair::fail<::granair::CollectiveError>
+                (
+                    "restart at t = ", runTime_.value(), " s: constant/couplingProperties has a discharge ",
+                    "counter, the restart point has none (the case was changed)"
+                );
+            }
+            discharge_->restore(restartState_.balance, restartState_.maxTagSeen);
+            massFlow_->restore(restartState_.massFlow);
+        }
+    }
+    if (restart_)
+    {
+        // The global totals so far, held by rank 0 (the end report sums).
+        floorHitsTotal_ = Pstream::master() ? restartState_.floorHitsTotal : 0;
+        minRawEps_ = restartState_.minRawVoidFraction;
+    }
+}
+
+
+void CoupledRun::checkRestartedDem() const
+{
+    const RestartState& s = restartState_;
+    const std::int64_t n = dem_->nGlobal();
+    if (dem_->step() != s.demStep || n != s.particles)
+    {
+        ::granair::fail<::granair::CollectiveError>
+        (
+            "restart: DEM and CFD times do not match. The CFD starts at t = ", s.time, " s, whose restart point ",
+            restartDirectory(runTime_.globalPath(), s.timeName), "/coupling has LIGGGHTS at step ", s.demStep,
+            " (t_DEM = ", s.demTime, " s) with ", s.particles, " particles; after the restart script ",
+            run_.demRestartScript, " LIGGGHTS is at step ", dem_->step(), " (t_DEM = ", dem_->time(), " s) with ",
+            n, " particles. The restart script must read the restart point's particles: ",
+            "`read_restart ${granair_restart}` (docs/case-format.md, Restart)"
+        );
     }
 }
 
@@ -140,17 +251,25 @@ void CoupledRun::openOutput()
     {
         layout.monitorColumns = monitors_->columns();
     }
+    // A restart continues the series after the rows up to its time.
     series_ = std::make_unique<::granair::StepSeries>
     (
-        MPI_COMM_WORLD, caseDir/"postProcessing"/"timeSeries", layout
+        MPI_COMM_WORLD, caseDir/"postProcessing"/"timeSeries", layout,
+        restart_ ? restartState_.seriesRows : -1
     );
     // Particles for ParaView (fields: OpenFOAM's own writeControl).
+    vtkOrigin_ = restart_ ? restartState_.vtkOrigin : tStart_;
     if (run_.vtkInterval > 0)
     {
         particleVtk_ = std::make_unique<::granair::ParticleVtkWriter>
         (
             MPI_COMM_WORLD, caseDir/"postProcessing"/"particles"
         );
+        if (restart_)
+        {
+            particleVtk_->resume(restartState_.vtkTimes);
+            vtkNext_ = label(restartState_.vtkNext);
+        }
     }
 }
 
@@ -300,16 +419,22 @@ void CoupledRun::run()
     // start time directory (replacing any 0/voidfraction given): the bed
     // the run starts from, in the same model and floor as every later field.
     //   With the air on, the particles also get their fluid force from the
-    // initial air fields now, for the first interval of DEM steps.
+    // initial air fields now, for the first interval of DEM steps. At a
+    // restart they have it already (LIGGGHTS' restart file: the force the
+    // run computed at this time), and the start time's outputs exist.
     if (air_)
     {
         mapParticles();
-        forcesToDem();
+        if (!restart_)
+        {
+            forcesToDem();
+        }
     }
     else
     {
         mapVoidFraction();
     }
+    if (!restart_)
     {
         StageTimers::Scope s(timers_, StageTimers::Output);
         voidFraction().write();
@@ -354,6 +479,10 @@ void CoupledRun::run()
             {
                 writeParticles(k);
             }
+            if (runTime_.writeTime())
+            {
+                writeRestartPoint();
+            }
         }
         resources_.addStep(series_->last().particles, settings_.couplingInterval);
         stepsDone_ = k;
@@ -382,6 +511,77 @@ void CoupledRun::writeStopPoint()
             mapVoidFraction();
         }
         runTime_.writeNow();
+        writeRestartPoint();
+    }
+}
+
+
+void CoupledRun::writeRestartPoint()
+{
+    const fileName caseDir = runTime_.globalPath();
+    const fileName dir = restartDirectory(caseDir, runTime_.timeName());
+    if (Pstream::master())
+    {
+        mkDir(dir);
+    }
+    // LIGGGHTS writes it from its rank 0 (this process's rank 0 made the
+    // directory); it re-initialises, so the next advance is a full setup.
+    dem_->command("write_restart " + dir + "/dem.restart");
+    RestartState s;
+    s.time = runTime_.value();
+    s.timeName = runTime_.timeName();
+    s.demStep = dem_->step();
+    s.demTime = dem_->time();
+    s.particles = dem_->nGlobal();
+    s.seriesRows = series_->rows();
+    s.vtkOrigin = vtkOrigin_;
+    s.vtkNext = long(vtkNext_);
+    if (particleVtk_)
+    {
+        s.vtkTimes = particleVtk_->times();
+    }
+    if (discharge_)
+    {
+        s.discharge = true;
+        s.balance = discharge_->balance();
+        s.maxTagSeen = discharge_->maxTagSeen();
+        s.massFlow = massFlow_->history();
+    }
+    // floorHitsTotal_ and minRawEps_ are this rank's: the state holds the
+    // global ones (a restart gives the total to rank 0).
+    s.floorHitsTotal = returnReduce(label(floorHitsTotal_), sumOp<label>());
+    s.minRawVoidFraction = returnReduce(minRawEps_, minOp<scalar>());
+    if (Pstream::master())
+    {
+        s.write(dir/"coupling");   // last: marks the restart point complete
+    }
+    purgeRestartPoints();
+}
+
+
+void CoupledRun::purgeRestartPoints() const
+{
+    // As OpenFOAM's purgeWrite N keeps the last N time directories.
+    const label keep = runTime_.controlDict().lookupOrDefault<label>("purgeWrite", 0);
+    if (keep <= 0 || !Pstream::master())
+    {
+        return;
+    }
+    const fileName root = runTime_.globalPath()/"restart";
+    fileNameList dirs = readDir(root, fileName::DIRECTORY);
+    std::vector<std::pair<scalar, fileName>> times;
+    for (const fileName& d : dirs)
+    {
+        scalar t;
+        if (readScalar(d, t))
+        {
+            times.emplace_back(t, d);
+        }
+    }
+    std::sort(times.begin(), times.end());
+    for (std::size_t k = 0; k + std::size_t(keep) < times.size(); ++k)
+    {
+        rmDir(root/times[k].second);
     }
 }
 
@@ -392,7 +592,7 @@ void CoupledRun::writeParticles(label k)
     // end; the tolerance absorbs the round-off of the accumulated time.
     const double t = runTime_.value();
     const double tol = 1e-6*runTime_.deltaTValue();
-    if (k > 0 && k < nSteps_ && t < tStart_ + vtkNext_*run_.vtkInterval - tol)
+    if (k > 0 && k < nSteps_ && t < vtkOrigin_ + vtkNext_*run_.vtkInterval - tol)
     {
         return;
     }
@@ -400,7 +600,7 @@ void CoupledRun::writeParticles(label k)
     // air; zero with the air off), in the order of particles_.
     const bool haveForces = air_ && demForces_.size() == 3*particles_.size();
     particleVtk_->write(t, particles_, haveForces ? demForces_.data() : nullptr, particles_.size());
-    vtkNext_ = label(std::floor((t - tStart_ + tol)/run_.vtkInterval)) + 1;
+    vtkNext_ = label(std::floor((t - vtkOrigin_ + tol)/run_.vtkInterval)) + 1;
 }
 
 
@@ -489,8 +689,8 @@ void CoupledRun::finish()
             << runTime_.value() << " s, after coupling step " << stepsDone_ << " of " << nSteps_
             << " (end time " << runTime_.endTime().value() << " s).\n"
             << "  The outputs are complete up to that time: postProcessing/timeSeries.{csv,h5} have every "
-            << "step to t = " << runTime_.value() << " s, and the fields of t = " << runTime_.timeName()
-            << " are written.\n"
+            << "step to t = " << runTime_.value() << " s, and the fields and a restart point of t = "
+            << runTime_.timeName() << " are written: continue with startFrom latestTime.\n"
             << "  Exit code " << ::granair::StopSignal::exitCode(stopSignal_) << ".\n";
     }
     Info<< os.str().c_str() << endl;

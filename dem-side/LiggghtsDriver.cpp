@@ -129,7 +129,16 @@ double LiggghtsDriver::timestep() const { return lmp_->update->dt; }
 
 std::int64_t LiggghtsDriver::step() const { return lmp_->update->ntimestep; }
 
-double LiggghtsDriver::time() const { return lmp_->update->get_cur_time(); }
+double LiggghtsDriver::time() const {
+    return aligned_ ? alignedTime_ + static_cast<double>(step() - alignedStep_) * timestep()
+                    : lmp_->update->get_cur_time();
+}
+
+void LiggghtsDriver::alignTime(double t) {
+    aligned_ = true;
+    alignedTime_ = t;
+    alignedStep_ = step();
+}
 
 std::int64_t LiggghtsDriver::nGlobal() const {
     // Not atom->natoms: LIGGGHTS only refreshes it at thermo output when atoms

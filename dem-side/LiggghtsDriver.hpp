@@ -52,6 +52,10 @@ public:
     double timestep() const;  // [s]
     std::int64_t step() const;
     double time() const;  // simulated time [s]
+    // After a read_restart LIGGGHTS 3.8 does not carry on its simulated time
+    // (the step number it keeps): from now on time() is t [s] plus the steps
+    // since, times the timestep.
+    void alignTime(double t);
     std::int64_t nGlobal() const;  // particles on all ranks. Collective.
     int nLocal() const;  // particles owned by this rank
 
@@ -101,6 +105,9 @@ private:
     std::FILE* screen_ = nullptr;  // the echoing screen stream we installed
     std::unique_ptr<FluidForceStore> forces_;
     bool needsSetup_ = true;  // a command ran since the last full setup
+    bool aligned_ = false;    // alignTime() was called
+    double alignedTime_ = 0;  // time [s] at step alignedStep_
+    std::int64_t alignedStep_ = 0;
     std::vector<int> lastTags_;  // tags in the order of the last getParticles
 };
 

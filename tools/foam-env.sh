@@ -18,11 +18,6 @@ export GRANAIR_PYTHON
 # Open MPI: allow root (CI, containers) and more ranks than cores.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
-# A SIGTERM/SIGINT to mpirun reaches the ranks as SIGTERM after this many
-# seconds, and SIGKILL follows as long after that (Open MPI's default: 1 s).
-# granairFoam finishes the coupling step in hand and writes its outputs on
-# SIGTERM (core/StopSignal.hpp), which in a large run can take longer than 1 s.
-export OMPI_MCA_odls_base_sigkill_timeout=${OMPI_MCA_odls_base_sigkill_timeout:-10}
 if [ ! -f "$WM_PROJECT_DIR/etc/controlDict" ]; then
   echo "granair: OpenFOAM runtime tree missing at $WM_PROJECT_DIR; run ./granair deps" >&2
   return 1 2>/dev/null || exit 1
