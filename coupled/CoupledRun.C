@@ -2,6 +2,7 @@
     granair: CoupledRun (see CoupledRun.H for the coupling step)
 \*---------------------------------------------------------------------------*/
 #include "coupled/CoupledRun.H"
+#include "coupled/DemProcessorGrid.H"
 
 #include "core/CapacityBytes.hpp"
 #include "core/Error.hpp"
@@ -120,6 +121,13 @@ void CoupledRun::openDem()
             "variable granair_restart index "
           + restartDirectory(caseDir, runTime_.timeName()) + "/dem.restart"
         );
+    }
+    // LIGGGHTS' processor grid follows the CFD decomposition (a script's
+    // own `processors` command comes later and wins).
+    const DemProcessorGrid grid(runTime_);
+    if (!grid.command().empty())
+    {
+        dem_->command(grid.command());
     }
     dem_->runFile(caseDir/(restart_ ? run_.demRestartScript : run_.demScript));
     if (restart_)
@@ -294,6 +302,8 @@ void CoupledRun::printSummary() const
         Info<< "  particles to postProcessing/particles/particles.pvd every " << run_.vtkInterval
             << " s" << nl;
     }
+    DemProcessorGrid(runTime_).report(*dem_);
+    DemProcessorGrid::checkNeighbourBins(*dem_);
     Info<< endl;
 }
 

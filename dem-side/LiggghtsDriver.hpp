@@ -13,6 +13,7 @@
 #pragma once
 #include <mpi.h>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -87,6 +88,25 @@ public:
     // Mass [kg] of each local particle, same order as getParticles (valid
     // until the next command or advance).
     void getParticleMasses(std::vector<double>& out) const;
+
+    // LIGGGHTS' processor grid (procs along x, y, z), once the box exists.
+    std::array<int, 3> processorGrid() const;
+    // Particles on each rank (index = rank). Collective.
+    std::vector<std::int64_t> particlesPerRank() const;
+
+    // What LIGGGHTS' neighbour binning will allocate on the busiest rank:
+    // bins of binSize (neigh_modify binsize, or half the neighbour cutoff
+    // 2 r_max + skin) over this rank's subdomain plus the ghost shell.
+    struct NeighbourBins {
+        double cutoff = 0;    // 2 r_max + skin [m]
+        double binSize = 0;   // [m]
+        bool userBinSize = false;
+        double bins = 0;      // on the rank with the most
+        int rank = 0;         // that rank
+        std::int64_t particlesThere = 0;
+    };
+    // Collective.
+    NeighbourBins neighbourBins() const;
 
     MPI_Comm comm() const { return comm_; }
     int rank() const { return rank_; }
