@@ -42,25 +42,9 @@ void blockRange(int part, int parts, BoxMesh::Index3& lo, BoxMesh::Index3& hi) {
 // Block `part` with CLOSED cells: a point on the block's boundary is found
 // by this block too (as by each neighbour sharing it), so edges and corners
 // have 2-4 finders and the exchange must agree on one owner.
-class ClosedBlock : public CellLocator {
+class ClosedBlock : public ClosedCells {
 public:
-    ClosedBlock(int part, int parts) : inner_(make(part, parts)) {}
-    int nCells() const override { return inner_.nCells(); }
-    int findCell(const Vec3& x, int hint = -1) const override {
-        const int c = inner_.findCell(x, hint);
-        if (c >= 0 || !inner_.bounds().contains(x)) return c;
-        const BoxMesh::Index3 first = inner_.globalIjk(0), last = inner_.globalIjk(inner_.nCells() - 1);
-        BoxMesh::Index3 ijk;
-        for (int a = 0; a < 3; ++a) {
-            const int i = static_cast<int>(std::floor((x[a] - kBlockLo[a]) / inner_.spacing()[a]));
-            ijk[a] = std::clamp(i, first[a], last[a]);
-        }
-        return inner_.localCell(ijk);
-    }
-    double cellVolume(int cell) const override { return inner_.cellVolume(cell); }
-    Vec3 cellCentre(int cell) const override { return inner_.cellCentre(cell); }
-    void cellNeighbours(int cell, std::vector<int>& out) const override { inner_.cellNeighbours(cell, out); }
-    Box bounds() const override { return inner_.bounds(); }
+    ClosedBlock(int part, int parts) : ClosedCells(make(part, parts), kBlockLo) {}
 
 private:
     static BoxMesh make(int part, int parts) {
@@ -68,7 +52,6 @@ private:
         blockRange(part, parts, lo, hi);
         return BoxMesh(kBlockLo, kBlockHi, kBlockCells, lo, hi);
     }
-    BoxMesh inner_;
 };
 
 // The particles of DEM rank `src`.
@@ -174,20 +157,5 @@ TEST_CASE("a sparse many-to-many pattern: each particle owned once, each value h
     // backward(): id, position and the owner's rank go home; every dem slot
     // filled (out is NaN-filled, so a lost value shows), none twice (owned
     // once each, above).
-    const int width = 5;
-    std::vector<double> values, out;
-    for (std::size_t k = 0; k < owned.size(); ++k) {
-        values.push_back(static_cast<double>(owned.state(k).id));
-        for (int a = 0; a < 3; ++a) values.push_back(owned.state(k).x[a]);
-        values.push_back(rank);
-    }
-    ex.backward(values, width, out);
-    REQUIRE(out.size() == dem.size() * width);
-    int wrong = 0;
-    for (std::size_t i = 0; i < dem.size(); ++i) {
-        wrong += out[i * width] != static_cast<double>(dem[i].id);
-        for (int a = 0; a < 3; ++a) wrong += out[i * width + 1 + a] != dem[i].x[a];
-        wrong += out[i * width + 4] != lowestFinder(meshes, dem[i].x);
-    }
-    CHECK(wrong == 0);
+    CHECK(backwardMismatches(ex, owned, dem, meshes) == 0);
 }

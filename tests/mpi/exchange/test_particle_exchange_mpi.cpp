@@ -37,7 +37,6 @@ TEST_CASE("every particle reaches exactly the rank whose cells contain it, and c
 
     ParticleExchange ex(MPI_COMM_WORLD, mesh);
     OwnedParticles owned;
-    std::vector<double> values, out;
     // Several coupling steps with moving particles: buffers are reused and
     // consecutive NBX rounds follow each other closely.
     for (int step = 0; step < 4; ++step) {
@@ -60,22 +59,7 @@ TEST_CASE("every particle reaches exactly the rank whose cells contain it, and c
         CHECK(ex.stats().partners <= size - 1);
 
         // backward(): id, position and the owning rank go home.
-        const int width = 5;
-        values.clear();
-        for (const auto& o : owned) {
-            values.push_back(static_cast<double>(o.state.id));  // ids < 2^53: exact
-            for (int a = 0; a < 3; ++a) values.push_back(o.state.x[a]);
-            values.push_back(rank);
-        }
-        ex.backward(values, width, out);
-        REQUIRE(out.size() == dem.size() * width);
-        int wrong = 0;
-        for (std::size_t i = 0; i < dem.size(); ++i) {
-            wrong += out[i * width] != static_cast<double>(dem[i].id);
-            for (int a = 0; a < 3; ++a) wrong += out[i * width + 1 + a] != dem[i].x[a];
-            wrong += out[i * width + 4] != lowestFinder(meshes, dem[i].x);
-        }
-        CHECK(wrong == 0);
+        CHECK(backwardMismatches(ex, owned, dem, meshes) == 0);
     }
 }
 
