@@ -3,6 +3,8 @@
 #   granair_mesh DIR            blockMesh (log in DIR/log/blockMesh.log)
 #   granair_decompose DIR NP    decomposePar into NP subdomains (skipped for NP=1)
 #   granair_run DIR NP APP ...  run APP on the case (serial or mpirun -np NP ... -parallel)
+#   granair_liggghts DIR NP ... a stand-alone LIGGGHTS stage (serial or mpirun -np NP;
+#                               `liggghts` is build/bin/liggghts: its errors reach stderr)
 # Every step logs to DIR/log/<step>.log and, on failure, prints the log tail
 # and returns non-zero.
 _granair_lib_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -34,5 +36,14 @@ granair_run() {
     _granair_step "$dir" "$app" mpirun -np "$np" "$app" -parallel "$@"
   else
     _granair_step "$dir" "$app" "$app" "$@"
+  fi
+}
+
+granair_liggghts() {
+  local dir=$1 np=$2; shift 2
+  if [ "$np" -gt 1 ]; then
+    _granair_step "$dir" liggghts mpirun -np "$np" liggghts "$@"
+  else
+    _granair_step "$dir" liggghts liggghts "$@"
   fi
 }

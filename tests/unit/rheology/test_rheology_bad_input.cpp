@@ -70,7 +70,8 @@ TEST_CASE("rheologies: bad input", "[rheology][input]") {
         CHECK_THROWS_WITH(create(mcc + "pMin 0;"), Contains("pMin = 0"));
         CHECK_THROWS_WITH(create(mcc + "gammaDotMin 0;"), Contains("gammaDotMin = 0"));
         CHECK_THROWS_WITH(create(mcc + "phiMin 0.7;"), Contains("phiMin = 0.7"));
-        CHECK_THROWS_WITH(create(mcc + "d 0;"), Contains("d = 0"));
+        // (a key given twice is an error of its own: d replaced, not repeated)
+        CHECK_THROWS_WITH(create("type muI; muS 0.401; mu2 0.908; I0 0.0465; d 0; rhoP 1500;"), Contains("d = 0"));
         CHECK_THROWS_WITH(create(mcc + "regularisation gray;"),
                           Contains("regularisation") && Contains("unknown regularisation 'gray'") &&
                               Contains("none barkerGray2017"));
