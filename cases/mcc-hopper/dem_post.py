@@ -29,7 +29,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "pylib"))
-import closed_forms as cf  # noqa: E402
+from granair_cases import closed_forms as cf  # noqa: E402
 import dem_io              # noqa: E402
 
 C_BEVERLOO, K_RANGE = 0.58, (1.0, 3.0)     # Beverloo et al. (1961), as cases/mcc-hopper/post.py

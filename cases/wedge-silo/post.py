@@ -26,7 +26,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import make_case as mc                                # noqa: E402
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "pylib"))
-import closed_forms as cf                             # noqa: E402
+from granair_cases import closed_forms as cf         # noqa: E402
 import dem_io                                         # noqa: E402
 
 G = mc.G

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Closed-form discharge estimates (tools/pylib/closed_forms.py) against hand values.
+"""Closed-form discharge estimates (tools/granair_cases/closed_forms.py) against hand values.
 
 Hand values (computed on paper, 4 significant figures):
 - MCC hopper (reference case B): D = 25 mm, d = 660 um, rho_b = 900, C = 0.58:
@@ -13,12 +13,9 @@ Hand values (computed on paper, 4 significant figures):
   dp/dz = -rho_b g stops the flow.
 """
 import math
-import os
-import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools", "pylib"))
-import closed_forms as cf   # noqa: E402
+from granair_cases import closed_forms as cf
 
 
 class ClosedForms(unittest.TestCase):

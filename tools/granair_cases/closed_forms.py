@@ -1,5 +1,5 @@
 """closed_forms.py: the closed-form discharge estimates every fidelity level is
-compared with (used by tools/compare.py and the case post-processing scripts,
+compared with (used by tools/compare.py and the case studies,
 so the numbers in a case's summary and in the comparison table are the same).
 
 All SI: lengths m, densities kg/m3, viscosity Pa s, mass flow kg/s, z up.

@@ -1,0 +1,80 @@
+"""OpenFOAM files: fields, dictionary entries, time folders, checkMesh.
+
+Only ASCII files (every case writes `writeFormat ascii`)."""
+import os
+import re
+
+import numpy as np
+
+from . import CaseError
+
+_UNIFORM = re.compile(r"internalField\s+uniform\s+(\([^)]*\)|[^;\s]+)\s*;")
+_LIST = re.compile(r"internalField\s+nonuniform\s+List<(scalar|vector)>\s*(\d+)\s*\(")
+
+
+def read_field(path, n=None):
+    """internalField of a volScalarField (shape (n,)) or volVectorField ((n, 3)).
+    A uniform field needs n, the number of cells."""
+    try:
+        with open(path) as fh:
+            text = fh.read()
+    except OSError as e:
+        raise CaseError(f"{path}: cannot read the field ({e.strerror})")
+    m = _UNIFORM.search(text)
+    if m:
+        if n is None:
+            raise CaseError(f"{path}: uniform internalField, the number of cells is needed")
+        v = m.group(1)
+        value = [float(x) for x in v.strip("()").split()] if v.startswith("(") else float(v)
+        return np.tile(value, (n, 1)) if isinstance(value, list) else np.full(n, value)
+    m = _LIST.search(text)
+    if not m:
+        raise CaseError(f"{path}: no ASCII internalField (uniform or nonuniform List)")
+    count = int(m.group(2))
+    end = text.index("\n)", m.end())
+    body = text[m.end():end].replace("(", " ").replace(")", " ").split()
+    vals = np.array(body, dtype=float)
+    width = 3 if m.group(1) == "vector" else 1
+    if vals.size != count * width or (n is not None and count != n):
+        raise CaseError(f"{path}: internalField lists {vals.size // width} values, "
+                        f"expected {count if n is None else n}")
+    return vals.reshape(count, 3) if width == 3 else vals
+
+
+def time_dirs(case):
+    """[(t, path)] of the time folders of a case (serial or reconstructed), sorted."""
+    out = []
+    for name in os.listdir(case):
+        try:
+            out.append((float(name), os.path.join(case, name)))
+        except ValueError:
+            pass
+    return sorted(out)
+
+
+def time_dir(case, t, tol=1e-9):
+    """The time folder of time t, or None."""
+    return next((p for tt, p in time_dirs(case) if abs(tt - t) < tol), None)
+
+
+def set_entry(path, key, value):
+    """Set the top-level entry `key value;` of a dictionary file (it must exist)."""
+    with open(path) as fh:
+        text = fh.read()
+    new, n = re.subn(r"^(\s*" + re.escape(key) + r"\s+)[^;\n]*;", lambda m: f"{m.group(1)}{value};",
+                     text, count=1, flags=re.M)
+    if n != 1:
+        raise CaseError(f"{path}: no entry '{key}' to set")
+    with open(path, "w") as fh:
+        fh.write(new)
+
+
+def checkmesh(log):
+    """(cells, max non-orthogonality [deg]) from a checkMesh log."""
+    with open(log) as fh:
+        text = fh.read()
+    cells = re.search(r"^\s*cells:\s+(\d+)", text, re.M)
+    nonorth = re.search(r"non-orthogonality Max:\s+([\d.eE+-]+)", text)
+    if not cells:
+        raise CaseError(f"{log}: no cell count (did checkMesh run?)")
+    return int(cells.group(1)), float(nonorth.group(1)) if nonorth else float("nan")
