@@ -30,9 +30,11 @@ def read_field(path, n=None):
     m = _LIST.search(text)
     if not m:
         raise CaseError(f"{path}: no ASCII internalField (uniform or nonuniform List)")
-    count = int(m.group(2))
-    end = text.index("\n)", m.end())
-    body = text[m.end():end].replace("(", " ").replace(")", " ").split()
+    count, depth, end = int(m.group(2)), 1, m.end()
+    while depth and end < len(text):      # the list's closing parenthesis (short lists are on one line)
+        depth += {"(": 1, ")": -1}.get(text[end], 0)
+        end += 1
+    body = text[m.end():end - 1].replace("(", " ").replace(")", " ").split()
     vals = np.array(body, dtype=float)
     width = 3 if m.group(1) == "vector" else 1
     if vals.size != count * width or (n is not None and count != n):

@@ -13,6 +13,7 @@ shared machine is, unlike wall time.
 """
 import concurrent.futures
 import os
+import shutil
 import subprocess
 import time
 
@@ -76,6 +77,13 @@ def run(cmd, cwd, log=None, np=1, parallel=True, stop_when=None, poll=1.0):
         raise CaseError(f"'{' '.join(cmd)}' failed in {cwd} (exit {code}); last lines of {path}:\n"
                         + _tail(path))
     return usage.ru_utime + usage.ru_stime
+
+
+def clean(path):
+    """An empty folder at path (a study's runs start from nothing)."""
+    shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path)
+    return path
 
 
 def decompose(case, np):

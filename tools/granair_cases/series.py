@@ -37,6 +37,20 @@ def write_csv(path, columns, fmt="{:.8g}"):
             w.writerow([f.format(v[i]) for f, (_, v) in zip(fmts, columns)])
 
 
+def write_rows(path, rows, fmt=None):
+    """A table of dicts (one per row; the columns in order of first appearance,
+    missing cells empty); floats as repr, or with fmt ("{:.6g}") if given."""
+    fields = []
+    for r in rows:
+        fields += [k for k in r if k not in fields]
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=fields, restval="")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: fmt.format(v) if fmt and isinstance(v, float) else v for k, v in r.items()})
+    return path
+
+
 def step_lengths(t, t_start=0.0):
     """Length of each step: row i covers (t[i-1], t[i]], the first from t_start."""
     return np.diff(np.concatenate([[t_start], t]))

@@ -55,6 +55,8 @@ class Foam(unittest.TestCase):
             write(os.path.join(d, "s"), "internalField nonuniform List<scalar>\n3\n(\n0.5\n1\n-2e-3\n)\n;\n")
             write(os.path.join(d, "v"), "internalField nonuniform List<vector> 2\n(\n(1 2 3)\n(4 5 -6)\n)\n;\n")
             write(os.path.join(d, "u"), "internalField   uniform (0 0 1);\n")
+            write(os.path.join(d, "short"), "internalField   nonuniform List<vector> 2((0 0 1) (0 0 2));\n")
+            np.testing.assert_array_equal(gc.foam.read_field(os.path.join(d, "short"))[:, 2], [1, 2])
             np.testing.assert_array_equal(gc.foam.read_field(os.path.join(d, "s")), [0.5, 1, -2e-3])
             np.testing.assert_array_equal(gc.foam.read_field(os.path.join(d, "v"))[1], [4, 5, -6])
             self.assertEqual(gc.foam.read_field(os.path.join(d, "u"), 4).shape, (4, 3))
