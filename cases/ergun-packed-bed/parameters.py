@@ -1,4 +1,5 @@
 """The numbers of the Ergun packed-bed study (README.md). SI units."""
+from granair_cases import closed_forms
 
 EPS = 0.4                      # bed void fraction
 RHO, MU = 1.2, 1.8e-5          # air [kg/m3], [Pa s]
@@ -26,7 +27,5 @@ def cell_size(d):
 
 
 def ergun(u_s, d, eps=EPS):
-    """Ergun (1952) pressure drop per length [Pa/m] at superficial velocity U_s:
-    150 mu U_s (1-eps)^2 / (eps^3 d^2) + 1.75 rho U_s^2 (1-eps) / (eps^3 d)."""
-    return (150 * MU * u_s * (1 - eps) ** 2 / (eps ** 3 * d ** 2)
-            + 1.75 * RHO * u_s ** 2 * (1 - eps) / (eps ** 3 * d))
+    """Ergun (1952) pressure drop per length [Pa/m] at superficial velocity U_s."""
+    return closed_forms.ergun_gradient(u_s, eps, d, RHO, MU)

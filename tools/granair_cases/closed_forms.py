@@ -25,6 +25,11 @@ All SI: lengths m, densities kg/m3, viscosity Pa s, mass flow kg/s, z up.
   estimate. It is the drag of still air on particles leaving at V0; the
   suction that the dilating bed draws above the orifice (the pressure
   gradient the DEM-CFD and continuum runs resolve) is not in it.
+- Ergun (1952), Chem. Eng. Prog. 48(2), 89: the pressure gradient of a packed
+  bed of spheres, void fraction eps, superficial velocity U_s,
+      -dp/dz = 150 mu U_s (1-eps)^2 / (eps^3 d^2) + 1.75 rho U_s^2 (1-eps) / (eps^3 d).
+- Wen & Yu (1966), AIChE J. 12(3), 610: minimum fluidisation,
+      Re_mf = sqrt(33.7^2 + 0.0408 Ar) - 33.7, Ar = rho_f (rho_p - rho_f) g d^3 / mu^2.
 """
 import math
 
@@ -78,3 +83,20 @@ def carleton_ratio(B, theta_deg, d, rho_p, rho_f, mu, g=G):
     """W(with air)/W(dry) = V0(air)/V0(dry) of Carleton's balance (same bulk density)."""
     return carleton_velocity(B, theta_deg, d, rho_p, rho_f, mu, g) / \
         carleton_velocity(B, theta_deg, d, rho_p, 0.0, 0.0, g)
+
+
+def ergun_gradient(u_s, eps, d, rho, mu):
+    """Ergun (1952) pressure drop per length [Pa/m] of a packed bed at superficial velocity u_s."""
+    return (150 * mu * u_s * (1 - eps) ** 2 / (eps ** 3 * d ** 2)
+            + 1.75 * rho * u_s ** 2 * (1 - eps) / (eps ** 3 * d))
+
+
+def archimedes(d, rho_p, rho_f, mu, g=G):
+    """Ar = rho_f (rho_p - rho_f) g d^3 / mu^2."""
+    return rho_f * (rho_p - rho_f) * g * d ** 3 / mu ** 2
+
+
+def wen_yu_umf(d, rho_p, rho_f, mu, g=G):
+    """Minimum fluidisation velocity [m/s] of Wen & Yu (1966)."""
+    re_mf = math.sqrt(33.7 ** 2 + 0.0408 * archimedes(d, rho_p, rho_f, mu, g)) - 33.7
+    return re_mf * mu / (rho_f * d)

@@ -50,6 +50,17 @@ class ClosedForms(unittest.TestCase):
         # coarser particles feel less drag: the ratio tends to 1
         self.assertGreater(cf.carleton_ratio(B, th, 10 * d, rp, rf, mu), r)
 
+    def test_ergun_and_wen_yu(self):
+        # the first-step packed column (tests/case/first_step_force.py): eps = 1 - pi/6,
+        # d = 1 mm, U_s = 0.2 eps = 0.0953 m/s: 150 mu U (1-e)^2/(e^3 d^2) = 652.3,
+        # 1.75 rho U^2 (1-e)/(e^3 d) = 92.3 Pa/m
+        eps = 1 - math.pi / 6
+        self.assertAlmostEqual(cf.ergun_gradient(0.2 * eps, eps, 1e-3, 1.2, 1.8e-5), 744.6, delta=0.5)
+        # 0.5 mm glass beads in air (cases/fluidised-bed/README.md): Ar = 1.2 x 2498.8 x 9.81 x
+        # 1.25e-10 / 3.24e-10 = 11349, U_mf = 0.1885 m/s
+        self.assertAlmostEqual(cf.archimedes(0.5e-3, 2500, 1.2, 1.8e-5), 11349, delta=1)
+        self.assertAlmostEqual(cf.wen_yu_umf(0.5e-3, 2500, 1.2, 1.8e-5), 0.1885, delta=5e-5)
+
     def test_crewdson(self):
         self.assertAlmostEqual(cf.crewdson(1.0, -600.0 * 9.81 / 2, 600.0), 1 / math.sqrt(2), delta=1e-12)
         self.assertEqual(cf.crewdson(1.0, -600.0 * 9.81 * 1.5, 600.0), 0.0)
