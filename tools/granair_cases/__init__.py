@@ -23,4 +23,4 @@ class CaseError(Exception):
     file, the key or the command and what was expected."""
 
 
-from . import foam, template, runner, dem, series, closed_forms, levels, checks, plots, cli  # noqa: E402,F401
+from . import foam, template, runner, dem, series, powder, closed_forms, levels, checks, plots, cli  # noqa: E402,F401

@@ -27,6 +27,15 @@ def read_csv(path, min_rows=1):
     return {h: data[:, i] for i, h in enumerate(rows[0])}
 
 
+def read_table(path):
+    """A CSV with a header line as a list of dicts of strings (tables of mixed columns)."""
+    try:
+        with open(path, newline="") as fh:
+            return list(csv.DictReader(fh))
+    except OSError as e:
+        raise CaseError(f"{path}: cannot read ({e.strerror})")
+
+
 def write_csv(path, columns, fmt="{:.8g}"):
     """columns: [(name, values)] of equal length, written with fmt (one or per column)."""
     fmts = fmt if isinstance(fmt, (list, tuple)) else [fmt] * len(columns)
@@ -96,21 +105,46 @@ def trailing_mean(t, y, window):
     return out
 
 
-def window_means(t, dt, columns, width, keep_last=0.0, tol=1e-9):
+def window_means(t, dt, columns, width, keep_last=0.0, tol=0.0):
     """Means over consecutive windows of `width` [s]: a window starts where the
-    previous one ended and closes at the first row with t >= start + width;
-    each row's value acts over its step dt. The last, unclosed window is kept if
-    it spans more than keep_last x width (None: never). Returns (window
-    centres, [means per column])."""
+    previous one ended and closes at the first row with t >= start + width - tol;
+    each row's value acts over its step dt (a rate's mean is the change of its
+    integral over the window length). The last, unclosed window is kept if it
+    spans more than keep_last x width (None: never). Returns (window centres,
+    [means per column])."""
     centres, means = [], [[] for _ in columns]
     start, i0 = float(t[0] - dt[0]), 0
     for i in range(len(t)):
-        last = i == len(t) - 1
-        if t[i] >= start + width - tol or (last and keep_last is not None):
+        closes = t[i] >= start + width - tol
+        if closes or (i == len(t) - 1 and keep_last is not None and t[i] - start > keep_last * width):
             span = float(t[i] - start)
-            if t[i] >= start + width - tol or span > keep_last * width:
-                centres.append(0.5 * (start + float(t[i])))
-                for m, c in zip(means, columns):
-                    m.append(float(np.sum(c[i0:i + 1] * dt[i0:i + 1]) / span))
+            centres.append(0.5 * (start + float(t[i])))
+            for m, c in zip(means, columns):
+                m.append(float(np.sum(c[i0:i + 1] * dt[i0:i + 1]) / span))
+        if closes:
             start, i0 = float(t[i]), i + 1
     return np.array(centres), [np.array(m) for m in means]
+
+
+def write_keys(path, pairs, header=None):
+    """`key = value` lines (floats with 6 digits), an optional # header first."""
+    with open(path, "w") as fh:
+        if header:
+            fh.write(f"# {header}\n")
+        for k, v in pairs:
+            fh.write(f"{k} = {v:.6g}\n" if isinstance(v, float) else f"{k} = {v}\n")
+    return path
+
+
+def read_keys(path):
+    """The `key = value` lines of a summary as {key: float or str}."""
+    out = {}
+    with open(path) as fh:
+        for line in fh:
+            k, sep, v = line.partition(" = ")
+            if sep and not k.startswith("#"):
+                try:
+                    out[k.strip()] = float(v)
+                except ValueError:
+                    out[k.strip()] = v.strip()
+    return out
