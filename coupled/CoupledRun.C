@@ -107,6 +107,26 @@ CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
         air_->Ksl().writeOpt() = IOobject::AUTO_WRITE;
         air_->Us().writeOpt() = IOobject::AUTO_WRITE;
     }
+    else
+    {
+        // DEM only: the void fraction for the output, with the case's model.
+        locator_ = std::make_unique<FoamCellLocator>(mesh_);
+        exchange_ = std::make_unique<::granair::ParticleExchange>(MPI_COMM_WORLD, *locator_);
+        step_ = std::make_unique<::granair::CouplingStep>
+        (
+            settings_, *locator_, ::granair::FluidProperties{}
+        );
+        demVoidFraction_ = std::make_unique<volScalarField>
+        (
+            IOobject
+            (
+                "voidfraction", runTime_.timeName(), mesh_, IOobject::NO_READ, IOobject::AUTO_WRITE
+            ),
+            mesh_,
+            dimensionedScalar("one", dimless, 1.0),
+            "zeroGradient"
+        );
+    }
 
     // Time series.
     std::vector<::granair::Column> cols{{"t", "s"}};
@@ -224,6 +244,26 @@ void CoupledRun::mapParticles()
 }
 
 
+void CoupledRun::mapVoidFraction()
+{
+    {
+        StageTimers::Scope s(timers_, StageTimers::Exchange);
+        // Particles that left the mesh (below a DEM-only run's coarse mesh)
+        // are simply not in the field: the DEM alone decides where they go.
+        exchange_->forward(particles_, owned_, ::granair::ParticleExchange::Outside::skip);
+    }
+    StageTimers::Scope s(timers_, StageTimers::Mapping);
+    step_->voidFraction(owned_, demVoidFraction_->primitiveFieldRef().data());
+    demVoidFraction_->correctBoundaryConditions();
+}
+
+
+volScalarField& CoupledRun::voidFraction()
+{
+    return air_ ? air_->voidfraction() : *demVoidFraction_;
+}
+
+
 void CoupledRun::coupleAir()
 {
     mapParticles();
@@ -270,19 +310,28 @@ void CoupledRun::run()
     const double loopStart = MPI_Wtime();
     const double cpuStart = cpuSeconds();
     double massFlow = 0;
-    if (air_ || particleVtk_)
     {
         StageTimers::Scope s(timers_, StageTimers::DEM);
         dem_->getParticles(particles_);
     }
+    // The void fraction at the start time is that of the particles there
+    // (not 0/voidfraction or its default 1): it becomes the old-time value
+    // of the first step, whose d(eps)/dt would otherwise see every particle
+    // appear within one CFD step and push the air out of the bed with a
+    // pressure kick many times the particles' weight. It is written to the
+    // start time directory (replacing any 0/voidfraction given): the bed
+    // the run starts from, in the same model and floor as every later field.
     if (air_)
     {
-        // The void fraction at the start time is that of the particles there
-        // (not 0/voidfraction or its default 1): it becomes the old-time
-        // value of the first step, whose d(eps)/dt would otherwise see every
-        // particle appear within one CFD step and push the air out of the
-        // bed with a pressure kick many times the particles' weight.
         mapParticles();
+    }
+    else
+    {
+        mapVoidFraction();
+    }
+    {
+        StageTimers::Scope s(timers_, StageTimers::Output);
+        voidFraction().write();
     }
     if (particleVtk_)
     {
@@ -315,6 +364,10 @@ void CoupledRun::run()
                 );
             }
             writeRow(runTime_.value(), massFlow);
+            if (!air_ && runTime_.writeTime())
+            {
+                mapVoidFraction();
+            }
             runTime_.write();
             if (particleVtk_)
             {

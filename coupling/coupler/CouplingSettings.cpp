@@ -20,10 +20,14 @@ CouplingSettings CouplingSettings::read(const Dictionary& dict) {
         s.pressureGradientForce = f.getBool("pressureGradient", true);
         s.buoyancyForce = f.getBool("buoyancy", true);
     }
-    if (s.airOn) {
-        s.drag = dragLaws().create(dict.subDict("drag"));
+    // Required with the air on. With the air off (a DEM-only run of the same
+    // case) the drag law is not used but still checked when given, and the
+    // void-fraction model (default centre) gives the run's void-fraction output.
+    if (s.airOn || dict.has("drag")) s.drag = dragLaws().create(dict.subDict("drag"));
+    if (s.airOn || dict.has("voidFraction"))
         s.voidFraction = voidFractionModels().create(dict.subDict("voidFraction"));
-    }
+    else
+        s.voidFraction = voidFractionModels().create(Dictionary::fromString("type centre;", dict.source()));
     return s;
 }
 

@@ -10,6 +10,8 @@
 //   forces { drag on; pressureGradient on; buoyancy on; }
 //   drag         { type ErgunGidaspow; ... }   // coupling/drag registry
 //   voidFraction { type centre; ... }          // coupling/voidfraction registry
+// drag and voidFraction are required with the air on; with it off they are
+// optional (voidFraction, default centre, still maps the output void fraction).
 #pragma once
 #include <memory>
 

@@ -16,15 +16,12 @@ static double volume(const OwnedParticle& p) {
 
 CouplingStep::CouplingStep(const CouplingSettings& settings, const CellLocator& mesh, FluidProperties fluid)
     : settings_(settings), mesh_(mesh), fluid_(fluid) {
-    if (!settings_.drag || !settings_.voidFraction)
-        fail("CouplingStep: drag law and void-fraction model are required when the air is on");
+    if (!settings_.voidFraction) fail("CouplingStep: a void-fraction model is required");
 }
 
-void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, const double* Ucell,
-                                    double* eps, double* K, double* Us) {
+void CouplingStep::voidFraction(const std::vector<OwnedParticle>& owned, double* eps) {
     const int nCells = mesh_.nCells();
     const std::size_t np = owned.size();
-    const double s = settings_.coarseGrainingFactor;
 
     // Stencils and solid volume.
     offset_.assign(1, 0);
@@ -54,6 +51,15 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
             eps[c] = raw;
         }
     }
+}
+
+void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, const double* Ucell,
+                                    double* eps, double* K, double* Us) {
+    if (!settings_.drag) fail("CouplingStep::particlesToCells: a drag law is required when the air is on");
+    voidFraction(owned, eps);
+    const int nCells = mesh_.nCells();
+    const std::size_t np = owned.size();
+    const double s = settings_.coarseGrainingFactor;
 
     // Drag coefficient per particle, then K and Us per cell.
     beta_.resize(np);

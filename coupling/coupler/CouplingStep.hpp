@@ -39,7 +39,13 @@ struct CouplingStepStats {
 
 class CouplingStep {
 public:
+    // Needs settings.voidFraction; settings.drag only for particlesToCells
+    // (a DEM-only run maps the void fraction alone, for its output).
     CouplingStep(const CouplingSettings& settings, const CellLocator& mesh, FluidProperties fluid);
+
+    // The first half of step 1: stencils, solid volume and the (floored)
+    // void fraction eps of every local cell (1 per cell); updates stats().
+    void voidFraction(const std::vector<OwnedParticle>& owned, double* eps);
 
     // Step 1. Ucell: air velocity per local cell (3 doubles each) from the
     // previous air step. Writes eps, K (1 per cell) and Us (3 per cell).

@@ -171,12 +171,20 @@ void ParticleExchange::updateBounds() {
     impl_->boxes.build(inflated);
 }
 
-void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vector<OwnedParticle>& owned) {
+void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vector<OwnedParticle>& owned,
+                               Outside outsidePolicy) {
     Impl& m = *impl_;
     m.routesValid = false;
     stats_ = ExchangeStats{};
     owned.clear();
     FirstError error;
+    // A particle in no rank's cells: an error, or (Outside::skip) counted.
+    auto outside = [&](const auto&... parts) {
+        if (outsidePolicy == Outside::skip)
+            ++stats_.outside;
+        else
+            error.note(parts...);
+    };
 
     // ---- 1. candidates, records packed per destination ----
     for (int b = 0; b < m.nOutboxes; ++b) m.outboxOfRank[m.outboxes[b].rank] = -1;
@@ -205,8 +213,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         }
         m.boxes.find(p.x, m.candidates);
         if (m.candidates.empty()) {
-            error.note("particle ", p.id, " at ", show(p.x),
-                       " is outside the CFD mesh (in no rank's CFD subdomain box)");
+            outside("particle ", p.id, " at ", show(p.x),
+                    " is outside the CFD mesh (in no rank's CFD subdomain box)");
             continue;
         }
         const bool multi = m.candidates.size() > 1;
@@ -265,8 +273,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         m.selfCell[j] = near >= 0 ? near : mesh_.findCell(p.x, hint);
         if (m.selfCell[j] >= 0) hint = m.selfCell[j];
         if (m.selfCell[j] < 0 && !m.selfMulti[j])
-            error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
-                       "'s CFD box but in none of its cells)");
+            outside("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
+                    "'s CFD box but in none of its cells)");
     }
     m.nInbound = static_cast<int>(m.inbox.messages.size());
     if (static_cast<int>(m.inbound.size()) < m.nInbound) m.inbound.resize(m.nInbound);
@@ -295,8 +303,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
                 in.found[mi++] = cell >= 0;
                 in.foundMulti += cell >= 0;
             } else if (cell < 0) {
-                error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
-                           "'s CFD box but in none of its cells)");
+                outside("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
+                        "'s CFD box but in none of its cells)");
             }
         }
     }
@@ -336,8 +344,8 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vecto
         }
         if (owner < 0) {
             const ParticleState& p = dem[mp.dem];
-            error.note("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (none of the ",
-                       mp.count, " ranks whose CFD box contains it has a cell containing it)");
+            outside("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (none of the ",
+                    mp.count, " ranks whose CFD box contains it has a cell containing it)");
             continue;
         }
         for (int c = mp.first; c < mp.first + mp.count; ++c) {

@@ -54,6 +54,8 @@ struct ExchangeStats {
     std::int64_t particlesSent = 0;  // particle records sent in forward() (incl. to self)
     std::int64_t bytesSent = 0;      // bytes sent to other ranks (forward + backward)
     int partners = 0;                // distinct ranks sent to (excluding self)
+    std::int64_t outside = 0;        // particles in no rank's cells (Outside::skip), counted once
+                                     // over all ranks (sum them for the total)
 };
 
 class ParticleExchange {
@@ -69,13 +71,19 @@ public:
     // the constructor; call again only if the mesh moves.
     void updateBounds();
 
+    // What forward() does with a particle that lies in no rank's cells.
+    enum class Outside { error, skip };
+
     // Route `dem` (this rank's DEM particles) to their cell owners. On return
     // `owned` holds the particles whose cell this rank owns, ordered by source
     // rank then by position in the source's `dem` (deterministic). Throws
     // InputError on all ranks, naming the first bad particle, when a particle
-    // has a non-finite position or velocity, a radius that is not > 0, or lies
-    // in no rank's cells.
-    void forward(const std::vector<ParticleState>& dem, std::vector<OwnedParticle>& owned);
+    // has a non-finite position or velocity, a radius that is not > 0, or
+    // (Outside::error) lies in no rank's cells. With Outside::skip such a
+    // particle is owned by no rank, counted in stats().outside, and gets NaN
+    // values from backward() (a DEM-only run maps only what is in the mesh).
+    void forward(const std::vector<ParticleState>& dem, std::vector<OwnedParticle>& owned,
+                 Outside outside = Outside::error);
 
     // Send `width` doubles per owned particle (ordered as `owned` of the last
     // forward()) back to the DEM owners; `out` receives width doubles per

@@ -37,7 +37,14 @@ TEST_CASE("coupling settings reject bad values naming file and key", "[coupler]"
     CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(
                           "couplingInterval 5; drag { type Nope; } voidFraction { type centre; }", "cp")),
                       Contains("unknown drag law 'Nope'") && Contains("ErgunGidaspow"));
-    // with the air off no models are needed
+    // with the air off no models are needed: no drag law, the centre void
+    // fraction for the output field
     auto off = CouplingSettings::read(Dictionary::fromString("couplingInterval 5; air off;", "cp"));
     CHECK_FALSE(off.airOn);
+    CHECK_FALSE(off.drag);
+    CHECK(off.voidFraction->name() == "centre");
+    // ... but the ones given are still checked
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(
+                          "couplingInterval 5; air off; voidFraction { type middle; }", "cp")),
+                      Contains("unknown void-fraction model 'middle'"));
 }
