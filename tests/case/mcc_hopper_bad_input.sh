@@ -7,12 +7,11 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../tools/case-lib.sh"
 work=$1
-case_dir=$here/../../cases/mcc-hopper
 rm -rf "$work"; mkdir -p "$work"
+case_dir=$here/../../cases/mcc-hopper
 valid=$work/valid
-cp -r "$case_dir/template" "$valid"
-"$GRANAIR_PYTHON" "$case_dir/mesh.py" 6 "$valid"
-sed -i 's/^endTime .*/endTime         1e-4;/' "$valid/system/controlDict"
+"$case_dir/Allrun" --setup-only --mesh 6 --end 1e-4 --out "$work/setup" > /dev/null
+mv "$work/setup/runs/N6" "$valid"
 (cd "$valid" && blockMesh >log.blockMesh 2>&1 && setAlphaField >log.setAlphaField 2>&1)
 (cd "$valid" && granairContinuumFoam > log.ok 2>&1) || { echo "the valid case failed:"; tail "$valid/log.ok"; exit 1; }
 
