@@ -109,5 +109,9 @@ def fit_mu_s():
 # Checks (study.py, continuum.py --check; README "Expected results", "Continuum fidelity")
 AIR_CONTINUITY = 1e-6    # air in - out vs pore-volume growth of the silo, relative (measured 2.5e-9)
 PORE_VS_POWDER = 0.10    # pore-volume growth vs powder volume discharged, relative (measured -2.5 %, test run)
+# CG fields at the orifice (cg.py; README "CG fields at the orifice")
+CG_VOLUME_QUADRATURE = 1e-3   # CG solid volume in the window vs the parcels' kernel-weighted volume, relative
+CG_VS_AIR_BULK = 0.03         # bulk mean CG solid fraction vs 1 - air void fraction, relative
+CG_BULK_MIN_SOLID = 0.45      # "bulk": cells of the air mesh denser than this (not the dilated outflow)
 CONTINUUM_W_OVER_DEM = (1.5, 4.0)
 CONTINUUM_DPDZ_OVER_DEM = (0.5, 1.6)

@@ -6,7 +6,7 @@ tables, field pictures and VTK files, the study plots and the checks.
 
     study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR] [--jobs 2] [--np 1]
              [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
-             [--fill-height H] [--stage all|fill|runs|post] [--setup-only] [--check]
+             [--fill-height H] [--cg-every T] [--stage all|fill|runs|post] [--setup-only] [--check]
 
 Fills and runs are independent serial jobs, --jobs of them at a time (on a
 shared machine this beats one 2-rank job: the thin periodic slice gives every
@@ -18,7 +18,9 @@ at t = 0 and the end; with air, the air drawn in through the open top less
 the air leaving down through the orifice equals the growth of the silo's pore
 volume (continuity of the incompressible air), and that growth equals the
 volume of powder discharged (the silo's volume is fixed), within the
-tolerances of parameters.py and their reasons.
+tolerances of parameters.py and their reasons; at every field time with CG
+dumps, the CG fields at the orifice (cg.py): their solid volume against the
+parcels' and their bulk solid fraction against the air mesh's.
 """
 import json
 import math
@@ -29,6 +31,7 @@ import time
 
 import numpy as np
 
+import cg
 import granair_cases as gc
 import parameters as P
 
@@ -59,6 +62,7 @@ def numbers(a, b_mm, air):
     z_above = max(1, min(nz_h - 1, round(b / (hh / nz_h)))) * hh / nz_h    # a face layer about b above
     fill = a.fill_height if a.fill_height is not None else pb["fill"]
     chunk = max(1, round(0.02 / dem_dt))
+    cg_every = every if a.cg_every is None else a.cg_every     # CG dumps [s]: by default at the field times
     return dict(gc.template.constants(P), SIZE=a.size, B_MM=b_mm, B=b / 2, W=P.WIDTH / 2, HH=hh,
                 HT=hh + P.SHAFT_HEIGHT, THETA=theta, SLICE=slice_, SLICE_MM=slice_ * 1e3, NX=max(4, round(b / h)),
                 NX_SIDE=max(2, round((P.WIDTH - b) / 2 / (2 * h))), NZ_BELOW=max(4, round(P.BOX_BELOW / h)),
@@ -73,7 +77,8 @@ def numbers(a, b_mm, air):
                 SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
                 if youngs < 5e6 else "# (E >= 5e6 Pa: no soft_particles needed)",
                 N_MIN=math.ceil(P.SETTLE_MIN / (chunk * dem_dt)), N_MAX=math.ceil(P.SETTLE_MAX / (chunk * dem_dt)),
-                FILL="../fill", SEED=a.seed,
+                FILL="../fill", SEED=a.seed, CG_EVERY=round(cg_every / dem_dt),
+                GRANAIR_ROOT=os.path.normpath(os.path.join(HERE, "..", "..")),
                 N_PARCELS=round(P.PACKING_SETTLED * P.fill_area(b, fill) * slice_ / (s ** 3 * (math.pi / 6 * d3))))
 
 
@@ -214,6 +219,9 @@ def post_run(d, res, name):
         out["air_out_orifice_m3"] = float(-np.sum((s["outlet_air_kg_s"] * dt)[k]) / P.AIR_RHO)
         out["pore_growth_m3"] = float(np.sum(((eps[1] - eps[0]) * vol)[z > 0]))
         out["powder_out_m3"] = float(s["discharged_kg"][k][-1] / v["DEPTH_SCALE"] / P.RHO_P)
+    out["cg"], out["cg_png"] = cg.run(d, v, res, name, out["field_times"])
+    for c in out["cg"]:     # the discharge counter's rate (0.1 s window) next to the CG flux through the orifice
+        c["orifice"]["series_mass_flow_kg_s"] = float(np.interp(c["t"], t, s["mass_flow_kg_s"]))
     out["png"] = gc.plots.case_fields(
         os.path.join(res, f"{name}_fields.png"), f"{name}: b = {v['B_MM']} mm, {'with air' if air else 'DEM only'}",
         d, out["field_times"], [("voidfraction", "void fraction", "viridis", (0.35, 1.0))]
@@ -265,6 +273,7 @@ def check(runs, res):
         c.exact(f"{n}: lost", bal["lost"], 0, "DischargeCounter: every parcel is in the silo, below it or removed")
         c.true(f"{n}: fields, picture and VTK at t = 0 and the end", x["field_times"][:1] == [0] and x["png"] and
                os.path.isdir(os.path.join(res, "vtk", n, "openfoam")), f"field times {x['field_times']}")
+        cg.checks(c, n, x["cg"])
         if x["air"]:
             t = f"0-{x['balance_time_s']:g} s"
             c.close(f"{n}: air in through the top - out through the orifice vs pore-volume growth of the silo, {t}",
@@ -352,6 +361,23 @@ def write_summary(runs, fills, timings, res, wall, a):
                      f"{bal['wall_time_s']:9.0f}" + (f"  {1e9 * (x['air_in_top_m3'] - x['air_out_orifice_m3']):.4g} | "
                                                      f"{1e9 * x['pore_growth_m3']:.4g} | {1e9 * x['powder_out_m3']:.4g}"
                                                      if x["air"] else ""))
+    cg_rows = [(x["name"], r) for x in runs for r in x["cg"]]
+    if cg_rows:
+        lines += ["", "CG fields at the orifice (cg.py): solid volume in the window [mm3] by granairCG | kernel-weighted "
+                  "parcels | parcels centred inside (+- edge bound); bulk solid fraction CG | 1 - air eps (cells)"]
+        lines += [f"  {n:12s} t = {r['t']:<5g} {1e9 * r['cg_volume_m3']:10.5g} | {1e9 * r['kernel_weighted_m3']:10.5g} | "
+                  f"{1e9 * r['centres_inside_m3']:10.5g} (+- {1e9 * r['edge_bound_m3']:.3g});  {r['bulk_cg_solid']:.4f} | "
+                  f"{r['bulk_air_solid']:.4f} ({r['bulk_cells']}, rms per cell {r['bulk_rms_cell_difference']:.3f})"
+                  for n, r in cg_rows]
+        lines += ["", "CG fields on the orifice plane (means over the slot): solid fraction CG | CFD 1 - eps (CG/CFD - 1); "
+                  "v_z CG | CFD Us [m/s]; CG pressure [Pa]; air p [Pa], dp/dz [Pa/m]; mass flow CG flux | counter [kg/s]"]
+        for n, r in cg_rows:
+            o = r["orifice"]
+            lines.append(f"  {n:12s} t = {r['t']:<5g} {o['cg_solid_fraction']:.4f} | {o['cfd_solid_fraction']:.4f} "
+                         f"({100 * (o['cg_solid_fraction'] / o['cfd_solid_fraction'] - 1):+.1f} %);  "
+                         f"{o['cg_velocity_z']:.3f} | {o.get('cfd_solid_velocity_z', math.nan):.3f};  {o['cg_pressure']:6.1f};  "
+                         f"{o.get('air_pressure', math.nan):6.1f}, {o.get('air_dpdz', math.nan):7.0f};  "
+                         f"{o['cg_mass_flow_kg_s']:.4f} | {o['series_mass_flow_kg_s']:.4f}")
     if timings:
         lines += ["", "Stage times: wall [s] (on this machine, at its load) and CPU [s] of the stage's processes"]
         lines += [f"  {k:14s} wall {t['wall_s']:8.0f}   cpu {t['cpu_s']:8.0f}" for k, t in sorted(timings.items())]
@@ -381,6 +407,8 @@ def main():
     ap.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
     ap.add_argument("--fill-height", type=float, default=None, help="settled fill height [m]")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--cg-every", type=float, default=None,
+                    help="interval of the CG-field dumps [s] (default: the field interval; 0: none)")
     ap.add_argument("--stage", default="all", choices=["all", "fill", "runs", "post"],
                     help="fill: the fills only; runs: the runs from existing fills, then post; post: post only")
     a = gc.cli.parse(ap, os.path.join(HERE, "run"))
