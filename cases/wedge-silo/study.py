@@ -6,11 +6,19 @@ tables, field pictures and VTK files, the study plots and the checks.
 
     study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR] [--jobs 2] [--np 1]
              [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
-             [--fill-height H] [--cg-every T] [--stage all|fill|runs|post] [--setup-only] [--check]
+             [--fill-height H] [--cg-every T] [--whole [--chunk T]] [--stage all|fill|runs|post] [--setup-only] [--check]
 
 Fills and runs are independent serial jobs, --jobs of them at a time (on a
 shared machine this beats one 2-rank job: the thin periodic slice gives every
 rank as many ghost particles as it owns); --np N runs each discharge on N ranks.
+
+--whole runs each discharge until the silo is empty or the flow has stopped
+(parameters.py WHOLE_*, --t-end the limit, default 15 s), granairFoam a chunk
+at a time from its restart points (gc.chunks): a stopped or killed study
+resumes where it was, a finished run is skipped. Every run's time series
+carries the fill level (the bed height above the orifice holding the powder
+left at the fill's bulk density); fill_level.png puts the mass flow, the
+outlet gradient and the pressure about b above against it.
 
 Checked per run (--check exits 1 on a failure): the particle accounting
 closes exactly (inserted = present + removed, lost 0); fields, picture and VTK
@@ -53,7 +61,7 @@ def numbers(a, b_mm, air):
     k_coh = {"matched": P.K_COH_REAL * (youngs / P.E_REAL) ** (2.0 / 3.0), "raw": P.K_COH_REAL, "off": 0.0}[a.cohesion]
     t_r = gc.dem.rayleigh_time(s * P.D_MIN_PSD / 2, youngs, P.NU, P.RHO_P)
     interval, dem_dt = gc.dem.time_steps(cfg["cfd_dt"], t_r, cfg["rayleigh_fraction"])
-    t_end = a.t_end if a.t_end is not None else cfg["t_end"]
+    t_end = a.t_end if a.t_end is not None else P.WHOLE_T_MAX if a.whole else cfg["t_end"]
     every = a.write_interval if a.write_interval is not None else cfg["write_interval"]
     if abs(round(t_end / cfg["cfd_dt"]) * cfg["cfd_dt"] - t_end) > 1e-9:
         raise gc.CaseError(f"discharge time {t_end} s is not a whole number of CFD steps ({cfg['cfd_dt']} s)")
@@ -141,25 +149,57 @@ def do_fill(a, b, work):
     return dict(cpu_s=cpu, wall_s=time.time() - t0)
 
 
+def finished(d):
+    """Why a whole-discharge run is done (a string), or None: the DEM nearly empty, or
+    nothing crossed the orifice for STALL_TIME (a stopped flow: an arch, a cohesive rest)."""
+    try:
+        s = gc.series.read_csv(os.path.join(d, "postProcessing", "timeSeries.csv"))
+    except (OSError, gc.CaseError):
+        return None
+    t, n, out = s["t"], s["particles"], s["discharged_kg"]
+    if n[-1] <= P.EMPTY_FRACTION * n[0]:
+        return f"empty: {int(n[-1])} of {int(n[0])} parcels left at t = {t[-1]:g} s"
+    before = t <= t[-1] - P.STALL_TIME
+    if t[-1] > 2 * P.STALL_TIME and before.any() and out[-1] <= out[before][-1]:
+        return f"stopped: nothing crossed the orifice in {P.STALL_TIME:g} s before t = {t[-1]:g} s, {int(n[-1])} parcels left"
+    return None
+
+
 def do_run(a, b, air, work):
     name, d = f"b{b}_{'air' if air else 'noair'}", os.path.join(work, f"b{b}", "air" if air else "noair")
-    shutil.rmtree(d, ignore_errors=True)
     v = numbers(a, b, air)
-    gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",
-                                                                  "dem/in.materials"])
-    hopper_walls(v, d)
-    os.makedirs(os.path.join(d, "dem", "post"))
-    with open(os.path.join(d, "case.json"), "w") as fh:
-        json.dump(v, fh, indent=1)
+    resume = a.whole and not a.setup_only and gc.chunks.record(d)["chunks"]
+    if resume:
+        with open(os.path.join(d, "case.json")) as fh:
+            if json.load(fh) != json.loads(json.dumps(v)):
+                raise gc.CaseError(f"{d}: case.json differs from this study's numbers; remove the folder to start again")
+    else:
+        shutil.rmtree(d, ignore_errors=True)
+        gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",
+                                                                      "dem/in.materials"])
+        hopper_walls(v, d)
+        os.makedirs(os.path.join(d, "dem", "post"))
+        with open(os.path.join(d, "case.json"), "w") as fh:
+            json.dump(v, fh, indent=1)
     if a.setup_only:
         return {}
-    gc.runner.mesh(d, a.np)
+    if not resume:
+        gc.runner.mesh(d, a.np)
     t0 = time.time()
-    cpu = gc.runner.run(["granairFoam"], d, np=a.np)
+    if a.whole:
+        every = v["WRITE_INTERVAL"]
+        chunk = every * max(1, math.ceil(a.chunk / every - 1e-9))
+        rec = gc.chunks.run(d, chunk, finished, v["T_END"], np=a.np,
+                            progress=lambda m: print(f"wedge-silo: {m}", flush=True))
+        print(f"wedge-silo: {name} finished ({rec['reason']}), {rec['cpu_s']:.0f} s CPU in "
+              f"{len(rec['chunks'])} chunk(s)", flush=True)
+        cpu = rec["cpu_s"]
+    else:
+        cpu = gc.runner.run(["granairFoam"], d, np=a.np)
     wall = time.time() - t0
     if a.np > 1:
         gc.runner.run(["reconstructPar", "-withZero"], d)   # the start-time void fraction is in processor*/0
-    times = ",".join(f"{t:g}" for t in field_times(v))
+    times = ",".join(f"{t:g}" for t in field_times(v) if gc.foam.time_dir(d, t))
     gc.runner.run(["foamToVTK", "-time", times, "-fields", "(voidfraction p U)" if air else "(voidfraction)"], d)
     for func in ("writeCellCentres", "writeCellVolumes"):       # the silo's cells and volumes: its pore volume
         gc.runner.run(["postProcess", "-func", func, "-time", "0"], d, func)
@@ -196,10 +236,13 @@ def post_run(d, res, name):
         v = json.load(fh)
     r = gc.powder.dem(d)
     s, t, air = r["series"], r["t"], v["AIR"] == "on"
+    fill = fill_stats(os.path.join(d, "..", "fill"), v)
     zero = np.zeros(len(t))
     gc.series.write_csv(os.path.join(res, f"{name}.csv"), [("t", t), ("mass_flow_kg_s", s["mass_flow_kg_s"])] + [
         (k, s.get(k, zero)) for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")] + [
-        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"])])
+        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"]),
+        # the bed height holding what is still above the orifice at the fill's bulk density
+        ("fill_level_m", P.fill_level(2 * v["B"], fill["mass_full_depth_kg"] - s["discharged_kg"], fill["rho_b"]))])
     t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
     out = dict(name=name, b_mm=v["B_MM"], air=air, s=v["S"], size=v["SIZE"], np=v["NP"], t_end=float(t[-1]),
                steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1),
@@ -235,8 +278,8 @@ def post_run(d, res, name):
 
 
 def crewdson(w0, dpdz, rho_b):
-    """Air-impeded rate W0 sqrt(1 + (dp/dz)/(rho_b g)) (Crewdson et al. 1977), z up; dp/dz a number or an array."""
-    return np.vectorize(lambda x: gc.closed_forms.crewdson(w0, x, rho_b, P.G))(dpdz)
+    """Air-impeded rate W0 sqrt(1 + (dp/dz)/(rho_b g)) (Crewdson et al. 1977), z up; W0, dp/dz numbers or arrays."""
+    return np.vectorize(lambda w, x: gc.closed_forms.crewdson(w, x, rho_b, P.G))(w0, dpdz)
 
 
 def post_study(a, work, res, timings, wall):
@@ -329,6 +372,45 @@ def plots(runs, fills, series, res, size):
         ax.legend(fontsize=7)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(res, "outlet_pressure_gradient.png"))
+    fill_level_plot(runs, fills, series, res, size, colours)
+
+
+def fill_level_plot(runs, fills, series, res, size, colours):
+    """Mass flow, outlet dp/dz and the air pressure about b above the orifice against the
+    fill level (the bed height above the orifice), 0.1 s means; the Crewdson estimate from
+    the DEM-only rate at the same fill level and the gradient with air."""
+    plt = gc.plots.pyplot()
+    by = {(x["b_mm"], x["air"]): x for x in runs}
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8))
+    for x in runs:
+        b, ts, c = x["b_mm"], series[x["name"]], colours.get(x["b_mm"], "k")
+        h, ls = ts["fill_level_m"] * 1e3, "-" if x["air"] else ":"
+        axes[0].plot(h, ts["mass_flow_kg_s"], color=c, ls=ls, lw=1.5, label=f"b = {b} mm, {'with air' if x['air'] else 'DEM only'}")
+        if x["air"]:
+            mean = lambda k: gc.series.trailing_mean(ts["t"], ts[k], 0.1)   # noqa: E731
+            axes[1].plot(h, mean("outlet_dpdz_Pa_m"), color=c, lw=1.5, label=f"b = {b} mm")
+            axes[1].axhline(-fills[b]["rho_b"] * P.G, color=c, lw=0.8, ls=":")
+            axes[2].plot(h, mean("above_p_Pa"), color=c, lw=1.5, label=f"b = {b} mm, about b above")
+            axes[2].plot(h, mean("outlet_p_Pa"), color=c, lw=1.0, ls="--", label=f"b = {b} mm, orifice plane")
+            if (b, False) in by:        # the DEM-only rate at the same fill level (its level falls monotonically)
+                t0 = series[by[(b, False)]["name"]]
+                w0 = np.interp(h, t0["fill_level_m"][::-1] * 1e3, t0["mass_flow_kg_s"][::-1], left=np.nan, right=np.nan)
+                axes[0].plot(h, crewdson(w0, mean("outlet_dpdz_Pa_m"), fills[b]["rho_b"]),
+                             color=c, ls="--", lw=1, label=f"b = {b} mm, Crewdson from the DEM-only W at that level")
+    for b in sorted(fills):
+        axes[0].axhspan(fills[b]["beverloo_kg_s"][1], fills[b]["beverloo_kg_s"][0], color=colours.get(b, "k"),
+                        alpha=0.12, lw=0)
+    titles = ["mass flow, full 60 mm depth [kg/s]; shaded: Hagen-Beverloo k = 1..3",
+              "outlet air dp/dz [Pa/m] (0.1 s mean); dotted: -rho_b g", "air pressure - ambient [Pa] (0.1 s mean)"]
+    for ax, title in zip(axes, titles):
+        ax.set_xlabel("fill level: bed height above the orifice [mm] (falls as the silo empties)")
+        ax.set_title(title, fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=6)
+    axes[0].set_ylim(0, None)
+    fig.suptitle(f"Wedge silo ({size}) against the fill level", fontsize=10)
+    fig.tight_layout()
+    gc.plots.save(fig, os.path.join(res, "fill_level.png"))
 
 
 def write_summary(runs, fills, timings, res, wall, a):
@@ -409,6 +491,10 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--cg-every", type=float, default=None,
                     help="interval of the CG-field dumps [s] (default: the field interval; 0: none)")
+    ap.add_argument("--whole", action="store_true",
+                    help="until the silo is empty or the flow stops, in resumable chunks (--t-end: the limit)")
+    ap.add_argument("--chunk", type=float, default=P.WHOLE_CHUNK,
+                    help="--whole: granairFoam runs this long at a time [s], whole field intervals (default %(default)g)")
     ap.add_argument("--stage", default="all", choices=["all", "fill", "runs", "post"],
                     help="fill: the fills only; runs: the runs from existing fills, then post; post: post only")
     a = gc.cli.parse(ap, os.path.join(HERE, "run"))
