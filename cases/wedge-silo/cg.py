@@ -329,7 +329,7 @@ def picture(d, v, rows, path, name):
             ax.set_title(f"{title}, t = {r['t']:g} s", fontsize=7)
             ax.tick_params(labelsize=6)
             ax.grid(alpha=0.3)
-            if ax.lines:
+            if any(not ln.get_label().startswith("_") for ln in ax.lines):
                 ax.legend(fontsize=5.5)
     fig.tight_layout()
     return gc.plots.save(fig, path, dpi=90)
