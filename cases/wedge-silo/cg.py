@@ -343,9 +343,11 @@ def checks(c, name, rows):
                 "the same kernel integrated exactly per parcel; the grid's midpoint rule (spacing w/2) on a kernel "
                 "cut at 3 w with a 1 % step, dumps of 6 digits")
         c.near(f"{name}: CG solid volume vs the volume of the {r['parcels_inside']} parcels centred in the window, {t}",
-               r["cg_volume_m3"] * 1e9, r["centres_inside_m3"] * 1e9, r["edge_bound_m3"] * 1e9,
+               r["cg_volume_m3"] * 1e9, r["centres_inside_m3"] * 1e9,
+               (r["edge_bound_m3"] + P.CG_VOLUME_QUADRATURE * r["kernel_weighted_m3"]) * 1e9,
                "tolerance: the larger of what the kernel carries out of the window and into it across its top "
-               "edge, the only edge in the bed (their difference is the mismatch)", " mm3")
+               "edge, the only edge in the bed (their difference is the mismatch), plus the grid's quadrature "
+               "error as above (what is left when no parcel is near the edge)", " mm3")
         if r["bulk_cells"]:
             c.close(f"{name}: bulk CG solid fraction vs 1 - air void fraction, {r['bulk_cells']} cells, {t}",
                     r["bulk_cg_solid"], r["bulk_air_solid"], P.CG_VS_AIR_BULK,
