@@ -20,6 +20,9 @@ included), `--from` folders and its own `--run` output, and writes to --out
     mass_flow.png             mass flow vs time of every level with a time
                               series, the Beverloo band and the Carleton estimate
     outlet_dpdz.png           outlet air pressure gradient vs time (runs with air)
+    fill_level.png            mass flow and outlet dp/dz against the fill level (the bed
+                              height above the orifice), for the levels whose time
+                              series has a fill_level_m column (whole-discharge runs)
 Without --run nothing is simulated: levels with no results are listed with
 the command that would produce them. --run LEVEL runs that level's command
 first (its output under OUT/runs/), --run all every level the case can run.
@@ -271,6 +274,39 @@ def plot(rows, band, ratio, out, title):
     ax.grid(alpha=0.3)
     fig.tight_layout()
     plots.save(fig, os.path.join(out, "outlet_dpdz.png"))
+    with_level = [r for r in rows if r.get("series") is not None and "fill_level_m" in r["series"]]
+    if with_level:
+        fill_level_plot(with_level, band, ratio, out, title, colour_of, label_of)
+
+
+def fill_level_plot(rows, band, ratio, out, title, colour_of, label_of, width=0.1):
+    """Mass flow and outlet dp/dz against the fill level: means over `width` s windows of
+    each series (a per-step series is noisy; a series of window means is used as it is)."""
+    plt = plots.pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(13, 6.0))
+    axes[0].axhspan(band[0], band[1], color="0.85", label="Beverloo band (closed form, dry)")
+    axes[0].axhline(0.5 * (band[0] + band[1]) * ratio, color="0.4", ls="--", lw=1,
+                    label="Beverloo x Carleton (closed form, air)")
+    for r in rows:
+        s = r["series"]
+        cols = [s["mass_flow_kg_s"], s["fill_level_m"]] + ([s["outlet_dpdz_Pa_m"]] if r["air"] and
+                                                            "outlet_dpdz_Pa_m" in s else [])
+        t = s["t"]
+        if len(t) > 1 and float(t[1] - t[0]) < 0.5 * width:
+            _, cols = ts.window_means(t, ts.step_lengths(t), cols, width)
+        axes[0].plot(1e3 * cols[1], cols[0], lw=1.2, ls="-" if r["air"] else ":", color=colour_of(r),
+                     label=label_of(r))
+        if len(cols) > 2:
+            axes[1].plot(1e3 * cols[1], cols[2], lw=1.2, color=colour_of(r), label=label_of(r))
+    axes[0].set_ylabel("mass flow [kg/s]")
+    axes[1].set_ylabel("outlet air pressure gradient dp/dz [Pa/m]")
+    for ax in axes:
+        ax.set_xlabel("fill level: bed height above the orifice [mm] (discharge goes right to left)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=6, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
+    fig.suptitle(f"{title}: against the fill level", fontsize=10)
+    fig.tight_layout()
+    plots.save(fig, os.path.join(out, "fill_level.png"))
 
 
 def main(argv=None):
@@ -351,13 +387,16 @@ def main(argv=None):
     if missing:
         lines += ["", "Not in the table:"]
         lines += [f"- **{lv}**: {why}" for lv, why in missing]
-    lines += ["", "Plots: mass_flow.png, outlet_dpdz.png."]
+    by_level = any(r.get("series") is not None and "fill_level_m" in r["series"] for r in rows)
+    lines += ["", "Plots: mass_flow.png, outlet_dpdz.png"
+              + (", fill_level.png (against the bed height above the orifice)." if by_level else ".")]
     md = "\n".join(lines) + "\n"
     with open(os.path.join(out, "compare.md"), "w") as fh:
         fh.write(md)
     plot(rows, band, ratio, out, title)
     print(md)
-    print(f"[compare] results in {out}: compare.csv, compare.md, mass_flow.png, outlet_dpdz.png", flush=True)
+    print(f"[compare] results in {out}: compare.csv, compare.md, mass_flow.png, outlet_dpdz.png"
+          + (", fill_level.png" if by_level else ""), flush=True)
     return 0
 
 

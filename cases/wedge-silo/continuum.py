@@ -5,10 +5,14 @@ fidelity").
 
     continuum.py [--b MM ...] [--air on|off|both] [--out DIR] [--quick] [--check] [--end T]
                  [--mesh N] [--walls slip|noSlip] [--rheology muI|latzSchmidt] [--setup-only]
+                 [--fills demo|study] [--until F]
 
 One run per b and air setting from continuum/template/ (the silo as a plane
-mesh one cell of the whole 60 mm deep, the DEM demo's settled fills), run
-until half of the fill has left (stopAt writeNow) or --end. Per run
+mesh one cell of the whole 60 mm deep, the DEM demo's settled fills, or with
+--fills study the DEM study's), run until half of the fill has left (stopAt
+writeNow; --until F: the fraction F, e.g. 0.99 for the whole discharge) or
+--end. The time series also carries the fill level (the bed height above the
+orifice holding the powder left at the fill's bulk density). Per run
 OUT/b<b>_<air|noair>/: timeseries.csv (10 ms means of the outlet flow and
 gradient), level.json (level continuum), details.json, fields.png; OUT/summary.csv
 with the DEM-CFD demo's rates (reference-demo/summary.csv). The steady window
@@ -50,7 +54,11 @@ def latz():
 
 
 def numbers(a, b_mm, air):
-    b, fill, rho_b = b_mm * 1e-3, *P.FILLS[b_mm]
+    fills = P.FILLS_STUDY if a.fills == "study" else P.FILLS
+    if b_mm not in fills:
+        raise gc.CaseError(f"parameters.py FILLS{'_STUDY' if a.fills == 'study' else ''} has no fill for b = {b_mm} mm "
+                           f"(it has {sorted(fills)})")
+    b, fill, rho_b = b_mm * 1e-3, *fills[b_mm]
     if a.rheology == "latzSchmidt":
         # the closure fixes its own packing range c0 < c < cMax: the DEM fill's 0.583
         # is above cMax, so the bulk density is its middle, at the DEM fill height
@@ -95,7 +103,7 @@ def run_one(a, b_mm, air):
         try:
             with open(os.path.join(run, "postProcessing", "timeSeries.csv")) as fh:
                 rows = [r for r in csv.DictReader(fh)]
-            return len(rows) > 1 and float(rows[-2]["discharged_kg"]) >= 0.5 * float(rows[0]["powder_mass_kg"])
+            return len(rows) > 1 and float(rows[-2]["discharged_kg"]) >= a.until * float(rows[0]["powder_mass_kg"])
         except (OSError, ValueError, KeyError):
             return False
     t0 = time.time()
@@ -115,8 +123,9 @@ def post(a, run, out, name, v, cells, wall):
     model = (f"{rheology}, VOF, {'free-slip' if v['WALLS'] == 'slip' else 'no-slip'} walls, "
              f"{'Darcy-Ergun air, packing relaxing to ' + packing if air else 'no air'}, plane mesh N = {v['N']} "
              f"({cells} cells), full 60 mm depth")
+    level = P.fill_level(2 * v["B"], r["mass"], v["RHO_B"])    # the bed height holding the powder left
     o = gc.powder.continuum_outputs(r, out, t0, t1, 0.01, 0.5, "timeseries.csv", dict(
-        case="wedge-silo", model=model, b_mm=v["B_MM"], wall_time_s=wall, cores=1))
+        case="wedge-silo", model=model, b_mm=v["B_MM"], wall_time_s=wall, cores=1), [("fill_level_m", level)])
     sel = (t >= t0) & (t <= t1)
     with open(os.path.join(run, "log", "granairContinuumFoam.log")) as fh:
         cpu = re.findall(r"ExecutionTime = ([\d.eE+-]+) s", fh.read())
@@ -175,6 +184,10 @@ def main():
     ap.add_argument("--mesh", type=int, default=12, help="cells across the slot (default 12)")
     ap.add_argument("--walls", choices=["slip", "noSlip"], default="slip")
     ap.add_argument("--rheology", choices=["muI", "latzSchmidt"], default="muI")
+    ap.add_argument("--fills", choices=["demo", "study"], default="demo",
+                    help="the DEM fills to start from (parameters.py FILLS, FILLS_STUDY)")
+    ap.add_argument("--until", type=float, default=0.5,
+                    help="stop once this fraction of the fill has left (default 0.5; 0.99: the whole discharge)")
     a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "continuum-results" + ("-latz" if a.rheology == "latzSchmidt" else "")))
     if a.quick:
         a.mesh, a.end, a.b, a.air = 8, 0.3, a.b or [10], a.air or "on"

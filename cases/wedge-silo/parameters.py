@@ -30,6 +30,12 @@ SETTLE_MIN, SETTLE_MAX = 0.15, 0.6   # settling on the shutter [s]: at least, at
 KERNEL_WIDTHS = 1.6      # Gaussian void-fraction kernel and cells near the orifice: parcel diameters
 BEVERLOO_C, K_RANGE = 0.58, (1.0, 3.0)   # Hagen-Beverloo slot band (README)
 STEADY_FROM = 0.3        # steady discharge assumed from this time on [s]
+# The whole discharge (study.py --whole, issue 21): granairFoam in chunks from
+# restart points until the silo is empty or the flow has stopped, at most WHOLE_T_MAX.
+WHOLE_T_MAX = 15.0       # [s]; the study-size b = 10 mm silo empties in ~4 s with air
+WHOLE_CHUNK = 1.0        # [s] per granairFoam call (rounded up to whole field intervals)
+EMPTY_FRACTION = 0.005   # "empty": at most this share of the parcels is left in the DEM
+STALL_TIME = 0.25        # "stopped": nothing crossed the orifice for this long [s]
 
 # A size fixes the reductions per orifice width b [mm]: b_over_d, the orifice
 # width in mean parcel diameters (sets the coarse-graining factor
@@ -51,6 +57,8 @@ SIZES = {
 # Settled fills of the DEM demo (reference-demo/summary.txt): b [mm] ->
 # (fill height above the orifice [m], bulk density rho_b [kg/m3]).
 FILLS = {5: (0.086, 617.66), 10: (0.135, 619.41), 15: (0.191, 617.12)}
+# ... of the DEM study (reference-study-b10, -b15 summary.txt; b = 5 mm not run at study size)
+FILLS_STUDY = {10: (0.260, 619.0), 15: (0.253, 612.0)}
 # Shear test of the lactose (cases.md, section A): normal, shear stress [kPa].
 SHEAR_TEST = [(0.208, 0.11), (0.384, 0.198), (0.718, 0.359), (1.349, 0.667), (2.553, 1.251), (4.845, 2.368)]
 # mu(I) parameters not measured for lactose (README, assumptions): mu_2 - mu_s and
@@ -98,6 +106,15 @@ def fill_area(b, h):
     return 0.5 * (b + WIDTH) * hh + WIDTH * (h - hh)
 
 
+def fill_level(b, mass_kg, rho_b):
+    """The bed height [m] above the orifice that holds mass_kg (numbers or an array, at
+    the full depth) at the bulk density rho_b: the fill level of a discharging silo."""
+    import numpy as np
+    heights = np.linspace(0.0, hopper_height(b) + SHAFT_HEIGHT, 4001)
+    areas = np.array([fill_area(b, h) for h in heights])
+    return np.interp(np.maximum(mass_kg, 0.0) / (rho_b * DEPTH), areas, heights)
+
+
 def fit_mu_s():
     """Least-squares line tau = c + mu_s sigma through the shear test: (mu_s, c [kPa]).
     The intercept (cohesion, ~10 Pa) sets the pressure floor c/mu_s of mu(I)."""
@@ -109,5 +126,9 @@ def fit_mu_s():
 # Checks (study.py, continuum.py --check; README "Expected results", "Continuum fidelity")
 AIR_CONTINUITY = 1e-6    # air in - out vs pore-volume growth of the silo, relative (measured 2.5e-9)
 PORE_VS_POWDER = 0.10    # pore-volume growth vs powder volume discharged, relative (measured -2.5 %, test run)
+# CG fields at the orifice (cg.py; README "CG fields at the orifice")
+CG_VOLUME_QUADRATURE = 1e-3   # CG solid volume in the window vs the parcels' kernel-weighted volume, relative
+CG_VS_AIR_BULK = 0.03         # bulk mean CG solid fraction vs 1 - air void fraction, relative
+CG_BULK_MIN_SOLID = 0.45      # "bulk": cells of the air mesh denser than this (not the dilated outflow)
 CONTINUUM_W_OVER_DEM = (1.5, 4.0)
 CONTINUUM_DPDZ_OVER_DEM = (0.5, 1.6)

@@ -6,11 +6,19 @@ tables, field pictures and VTK files, the study plots and the checks.
 
     study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR] [--jobs 2] [--np 1]
              [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
-             [--fill-height H] [--stage all|fill|runs|post] [--setup-only] [--check]
+             [--fill-height H] [--cg-every T] [--whole [--chunk T]] [--stage all|fill|runs|post] [--setup-only] [--check]
 
 Fills and runs are independent serial jobs, --jobs of them at a time (on a
 shared machine this beats one 2-rank job: the thin periodic slice gives every
 rank as many ghost particles as it owns); --np N runs each discharge on N ranks.
+
+--whole runs each discharge until the silo is empty or the flow has stopped
+(parameters.py WHOLE_*, --t-end the limit, default 15 s), granairFoam a chunk
+at a time from its restart points (gc.chunks): a stopped or killed study
+resumes where it was, a finished run is skipped. Every run's time series
+carries the fill level (the bed height above the orifice holding the powder
+left at the fill's bulk density); fill_level.png puts the mass flow, the
+outlet gradient and the pressure about b above against it.
 
 Checked per run (--check exits 1 on a failure): the particle accounting
 closes exactly (inserted = present + removed, lost 0); fields, picture and VTK
@@ -18,7 +26,9 @@ at t = 0 and the end; with air, the air drawn in through the open top less
 the air leaving down through the orifice equals the growth of the silo's pore
 volume (continuity of the incompressible air), and that growth equals the
 volume of powder discharged (the silo's volume is fixed), within the
-tolerances of parameters.py and their reasons.
+tolerances of parameters.py and their reasons; at every field time with CG
+dumps, the CG fields at the orifice (cg.py): their solid volume against the
+parcels' and their bulk solid fraction against the air mesh's.
 """
 import json
 import math
@@ -29,6 +39,7 @@ import time
 
 import numpy as np
 
+import cg
 import granair_cases as gc
 import parameters as P
 
@@ -50,7 +61,7 @@ def numbers(a, b_mm, air):
     k_coh = {"matched": P.K_COH_REAL * (youngs / P.E_REAL) ** (2.0 / 3.0), "raw": P.K_COH_REAL, "off": 0.0}[a.cohesion]
     t_r = gc.dem.rayleigh_time(s * P.D_MIN_PSD / 2, youngs, P.NU, P.RHO_P)
     interval, dem_dt = gc.dem.time_steps(cfg["cfd_dt"], t_r, cfg["rayleigh_fraction"])
-    t_end = a.t_end if a.t_end is not None else cfg["t_end"]
+    t_end = a.t_end if a.t_end is not None else P.WHOLE_T_MAX if a.whole else cfg["t_end"]
     every = a.write_interval if a.write_interval is not None else cfg["write_interval"]
     if abs(round(t_end / cfg["cfd_dt"]) * cfg["cfd_dt"] - t_end) > 1e-9:
         raise gc.CaseError(f"discharge time {t_end} s is not a whole number of CFD steps ({cfg['cfd_dt']} s)")
@@ -59,6 +70,7 @@ def numbers(a, b_mm, air):
     z_above = max(1, min(nz_h - 1, round(b / (hh / nz_h)))) * hh / nz_h    # a face layer about b above
     fill = a.fill_height if a.fill_height is not None else pb["fill"]
     chunk = max(1, round(0.02 / dem_dt))
+    cg_every = every if a.cg_every is None else a.cg_every     # CG dumps [s]: by default at the field times
     return dict(gc.template.constants(P), SIZE=a.size, B_MM=b_mm, B=b / 2, W=P.WIDTH / 2, HH=hh,
                 HT=hh + P.SHAFT_HEIGHT, THETA=theta, SLICE=slice_, SLICE_MM=slice_ * 1e3, NX=max(4, round(b / h)),
                 NX_SIDE=max(2, round((P.WIDTH - b) / 2 / (2 * h))), NZ_BELOW=max(4, round(P.BOX_BELOW / h)),
@@ -73,7 +85,8 @@ def numbers(a, b_mm, air):
                 SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
                 if youngs < 5e6 else "# (E >= 5e6 Pa: no soft_particles needed)",
                 N_MIN=math.ceil(P.SETTLE_MIN / (chunk * dem_dt)), N_MAX=math.ceil(P.SETTLE_MAX / (chunk * dem_dt)),
-                FILL="../fill", SEED=a.seed,
+                FILL="../fill", SEED=a.seed, CG_EVERY=round(cg_every / dem_dt),
+                GRANAIR_ROOT=os.path.normpath(os.path.join(HERE, "..", "..")),
                 N_PARCELS=round(P.PACKING_SETTLED * P.fill_area(b, fill) * slice_ / (s ** 3 * (math.pi / 6 * d3))))
 
 
@@ -136,25 +149,57 @@ def do_fill(a, b, work):
     return dict(cpu_s=cpu, wall_s=time.time() - t0)
 
 
+def finished(d):
+    """Why a whole-discharge run is done (a string), or None: the DEM nearly empty, or
+    nothing crossed the orifice for STALL_TIME (a stopped flow: an arch, a cohesive rest)."""
+    try:
+        s = gc.series.read_csv(os.path.join(d, "postProcessing", "timeSeries.csv"))
+    except (OSError, gc.CaseError):
+        return None
+    t, n, out = s["t"], s["particles"], s["discharged_kg"]
+    if n[-1] <= P.EMPTY_FRACTION * n[0]:
+        return f"empty: {int(n[-1])} of {int(n[0])} parcels left at t = {t[-1]:g} s"
+    before = t <= t[-1] - P.STALL_TIME
+    if t[-1] > 2 * P.STALL_TIME and before.any() and out[-1] <= out[before][-1]:
+        return f"stopped: nothing crossed the orifice in {P.STALL_TIME:g} s before t = {t[-1]:g} s, {int(n[-1])} parcels left"
+    return None
+
+
 def do_run(a, b, air, work):
     name, d = f"b{b}_{'air' if air else 'noair'}", os.path.join(work, f"b{b}", "air" if air else "noair")
-    shutil.rmtree(d, ignore_errors=True)
     v = numbers(a, b, air)
-    gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",
-                                                                  "dem/in.materials"])
-    hopper_walls(v, d)
-    os.makedirs(os.path.join(d, "dem", "post"))
-    with open(os.path.join(d, "case.json"), "w") as fh:
-        json.dump(v, fh, indent=1)
+    resume = a.whole and not a.setup_only and gc.chunks.record(d)["chunks"]
+    if resume:
+        with open(os.path.join(d, "case.json")) as fh:
+            if json.load(fh) != json.loads(json.dumps(v)):
+                raise gc.CaseError(f"{d}: case.json differs from this study's numbers; remove the folder to start again")
+    else:
+        shutil.rmtree(d, ignore_errors=True)
+        gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",
+                                                                      "dem/in.materials"])
+        hopper_walls(v, d)
+        os.makedirs(os.path.join(d, "dem", "post"))
+        with open(os.path.join(d, "case.json"), "w") as fh:
+            json.dump(v, fh, indent=1)
     if a.setup_only:
         return {}
-    gc.runner.mesh(d, a.np)
+    if not resume:
+        gc.runner.mesh(d, a.np)
     t0 = time.time()
-    cpu = gc.runner.run(["granairFoam"], d, np=a.np)
+    if a.whole:
+        every = v["WRITE_INTERVAL"]
+        chunk = every * max(1, math.ceil(a.chunk / every - 1e-9))
+        rec = gc.chunks.run(d, chunk, finished, v["T_END"], np=a.np,
+                            progress=lambda m: print(f"wedge-silo: {m}", flush=True))
+        print(f"wedge-silo: {name} finished ({rec['reason']}), {rec['cpu_s']:.0f} s CPU in "
+              f"{len(rec['chunks'])} chunk(s)", flush=True)
+        cpu = rec["cpu_s"]
+    else:
+        cpu = gc.runner.run(["granairFoam"], d, np=a.np)
     wall = time.time() - t0
     if a.np > 1:
         gc.runner.run(["reconstructPar", "-withZero"], d)   # the start-time void fraction is in processor*/0
-    times = ",".join(f"{t:g}" for t in field_times(v))
+    times = ",".join(f"{t:g}" for t in field_times(v) if gc.foam.time_dir(d, t))
     gc.runner.run(["foamToVTK", "-time", times, "-fields", "(voidfraction p U)" if air else "(voidfraction)"], d)
     for func in ("writeCellCentres", "writeCellVolumes"):       # the silo's cells and volumes: its pore volume
         gc.runner.run(["postProcess", "-func", func, "-time", "0"], d, func)
@@ -190,15 +235,21 @@ def post_run(d, res, name):
     with open(os.path.join(d, "case.json")) as fh:
         v = json.load(fh)
     r = gc.powder.dem(d)
+    chunks = gc.chunks.record(d)["chunks"]
+    if chunks:      # a whole-discharge run: its log holds the last chunk's wall time only
+        r["balance"]["wall_time_s"] = sum(c["wall_s"] for c in chunks)
     s, t, air = r["series"], r["t"], v["AIR"] == "on"
+    fill = fill_stats(os.path.join(d, "..", "fill"), v)
     zero = np.zeros(len(t))
     gc.series.write_csv(os.path.join(res, f"{name}.csv"), [("t", t), ("mass_flow_kg_s", s["mass_flow_kg_s"])] + [
         (k, s.get(k, zero)) for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")] + [
-        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"])])
+        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"]),
+        # the bed height holding what is still above the orifice at the fill's bulk density
+        ("fill_level_m", P.fill_level(2 * v["B"], fill["mass_full_depth_kg"] - s["discharged_kg"], fill["rho_b"]))])
     t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
     out = dict(name=name, b_mm=v["B_MM"], air=air, s=v["S"], size=v["SIZE"], np=v["NP"], t_end=float(t[-1]),
                steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1),
-               balance=r["balance"], field_times=[x for x in field_times(v) if gc.foam.time_dir(d, x)])
+               balance=r["balance"], whole=bool(chunks), field_times=[x for x in field_times(v) if gc.foam.time_dir(d, x)])
     if air:
         for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m"):
             out[k] = gc.series.time_mean(t, s[k], t0, t1)
@@ -214,6 +265,9 @@ def post_run(d, res, name):
         out["air_out_orifice_m3"] = float(-np.sum((s["outlet_air_kg_s"] * dt)[k]) / P.AIR_RHO)
         out["pore_growth_m3"] = float(np.sum(((eps[1] - eps[0]) * vol)[z > 0]))
         out["powder_out_m3"] = float(s["discharged_kg"][k][-1] / v["DEPTH_SCALE"] / P.RHO_P)
+    out["cg"], out["cg_png"] = cg.run(d, v, res, name, out["field_times"])
+    for c in out["cg"]:     # the discharge counter's rate (0.1 s window) next to the CG flux through the orifice
+        c["orifice"]["series_mass_flow_kg_s"] = float(np.interp(c["t"], t, s["mass_flow_kg_s"]))
     out["png"] = gc.plots.case_fields(
         os.path.join(res, f"{name}_fields.png"), f"{name}: b = {v['B_MM']} mm, {'with air' if air else 'DEM only'}",
         d, out["field_times"], [("voidfraction", "void fraction", "viridis", (0.35, 1.0))]
@@ -227,8 +281,8 @@ def post_run(d, res, name):
 
 
 def crewdson(w0, dpdz, rho_b):
-    """Air-impeded rate W0 sqrt(1 + (dp/dz)/(rho_b g)) (Crewdson et al. 1977), z up; dp/dz a number or an array."""
-    return np.vectorize(lambda x: gc.closed_forms.crewdson(w0, x, rho_b, P.G))(dpdz)
+    """Air-impeded rate W0 sqrt(1 + (dp/dz)/(rho_b g)) (Crewdson et al. 1977), z up; W0, dp/dz numbers or arrays."""
+    return np.vectorize(lambda w, x: gc.closed_forms.crewdson(w, x, rho_b, P.G))(w0, dpdz)
 
 
 def post_study(a, work, res, timings, wall):
@@ -247,7 +301,8 @@ def post_study(a, work, res, timings, wall):
     for x in runs:
         gc.levels.write(os.path.join(res, f"{x['name']}.level.json"), case="wedge-silo",
                         level="cg-dem-cfd" if x["air"] else "cg-dem",
-                        model=f"DEM{'-CFD' if x['air'] else ''}, s = {x['s']:.3g}, {x['size']} size", b_mm=x["b_mm"],
+                        model=f"DEM{'-CFD' if x['air'] else ''}, s = {x['s']:.3g}, {x['size']} size"
+                        + (", whole discharge" if x["whole"] else ""), b_mm=x["b_mm"],
                         air=x["air"], steady_mass_flow_kg_s=x["W_kg_s"], steady_window_s=[x["steady_from_s"], x["steady_to_s"]],
                         outlet_dpdz_Pa_m=x.get("outlet_dpdz_Pa_m"), wall_time_s=x["balance"]["wall_time_s"], cores=x["np"],
                         timeseries=f"{x['name']}.csv", parcels=fills[x["b_mm"]]["n_parcels"], coarse_graining_factor=x["s"])
@@ -265,6 +320,7 @@ def check(runs, res):
         c.exact(f"{n}: lost", bal["lost"], 0, "DischargeCounter: every parcel is in the silo, below it or removed")
         c.true(f"{n}: fields, picture and VTK at t = 0 and the end", x["field_times"][:1] == [0] and x["png"] and
                os.path.isdir(os.path.join(res, "vtk", n, "openfoam")), f"field times {x['field_times']}")
+        cg.checks(c, n, x["cg"])
         if x["air"]:
             t = f"0-{x['balance_time_s']:g} s"
             c.close(f"{n}: air in through the top - out through the orifice vs pore-volume growth of the silo, {t}",
@@ -320,6 +376,45 @@ def plots(runs, fills, series, res, size):
         ax.legend(fontsize=7)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(res, "outlet_pressure_gradient.png"))
+    fill_level_plot(runs, fills, series, res, size, colours)
+
+
+def fill_level_plot(runs, fills, series, res, size, colours):
+    """Mass flow, outlet dp/dz and the air pressure about b above the orifice against the
+    fill level (the bed height above the orifice), 0.1 s means; the Crewdson estimate from
+    the DEM-only rate at the same fill level and the gradient with air."""
+    plt = gc.plots.pyplot()
+    by = {(x["b_mm"], x["air"]): x for x in runs}
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8))
+    for x in runs:
+        b, ts, c = x["b_mm"], series[x["name"]], colours.get(x["b_mm"], "k")
+        h, ls = ts["fill_level_m"] * 1e3, "-" if x["air"] else ":"
+        axes[0].plot(h, ts["mass_flow_kg_s"], color=c, ls=ls, lw=1.5, label=f"b = {b} mm, {'with air' if x['air'] else 'DEM only'}")
+        if x["air"]:
+            mean = lambda k: gc.series.trailing_mean(ts["t"], ts[k], 0.1)   # noqa: E731
+            axes[1].plot(h, mean("outlet_dpdz_Pa_m"), color=c, lw=1.5, label=f"b = {b} mm")
+            axes[1].axhline(-fills[b]["rho_b"] * P.G, color=c, lw=0.8, ls=":")
+            axes[2].plot(h, mean("above_p_Pa"), color=c, lw=1.5, label=f"b = {b} mm, about b above")
+            axes[2].plot(h, mean("outlet_p_Pa"), color=c, lw=1.0, ls="--", label=f"b = {b} mm, orifice plane")
+            if (b, False) in by:        # the DEM-only rate at the same fill level (its level falls monotonically)
+                t0 = series[by[(b, False)]["name"]]
+                w0 = np.interp(h, t0["fill_level_m"][::-1] * 1e3, t0["mass_flow_kg_s"][::-1], left=np.nan, right=np.nan)
+                axes[0].plot(h, crewdson(w0, mean("outlet_dpdz_Pa_m"), fills[b]["rho_b"]),
+                             color=c, ls="--", lw=1, label=f"b = {b} mm, Crewdson from the DEM-only W at that level")
+    for b in sorted(fills):
+        axes[0].axhspan(fills[b]["beverloo_kg_s"][1], fills[b]["beverloo_kg_s"][0], color=colours.get(b, "k"),
+                        alpha=0.12, lw=0)
+    titles = ["mass flow, full 60 mm depth [kg/s]; shaded: Hagen-Beverloo k = 1..3",
+              "outlet air dp/dz [Pa/m] (0.1 s mean); dotted: -rho_b g", "air pressure - ambient [Pa] (0.1 s mean)"]
+    for ax, title in zip(axes, titles):
+        ax.set_xlabel("fill level: bed height above the orifice [mm] (falls as the silo empties)")
+        ax.set_title(title, fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=6)
+    axes[0].set_ylim(0, None)
+    fig.suptitle(f"Wedge silo ({size}) against the fill level", fontsize=10)
+    fig.tight_layout()
+    gc.plots.save(fig, os.path.join(res, "fill_level.png"))
 
 
 def write_summary(runs, fills, timings, res, wall, a):
@@ -352,6 +447,23 @@ def write_summary(runs, fills, timings, res, wall, a):
                      f"{bal['wall_time_s']:9.0f}" + (f"  {1e9 * (x['air_in_top_m3'] - x['air_out_orifice_m3']):.4g} | "
                                                      f"{1e9 * x['pore_growth_m3']:.4g} | {1e9 * x['powder_out_m3']:.4g}"
                                                      if x["air"] else ""))
+    cg_rows = [(x["name"], r) for x in runs for r in x["cg"]]
+    if cg_rows:
+        lines += ["", "CG fields at the orifice (cg.py): solid volume in the window [mm3] by granairCG | kernel-weighted "
+                  "parcels | parcels centred inside (+- edge bound); bulk solid fraction CG | 1 - air eps (cells)"]
+        lines += [f"  {n:12s} t = {r['t']:<5g} {1e9 * r['cg_volume_m3']:10.5g} | {1e9 * r['kernel_weighted_m3']:10.5g} | "
+                  f"{1e9 * r['centres_inside_m3']:10.5g} (+- {1e9 * r['edge_bound_m3']:.3g});  {r['bulk_cg_solid']:.4f} | "
+                  f"{r['bulk_air_solid']:.4f} ({r['bulk_cells']}, rms per cell {r['bulk_rms_cell_difference']:.3f})"
+                  for n, r in cg_rows]
+        lines += ["", "CG fields on the orifice plane (means over the slot): solid fraction CG | CFD 1 - eps (CG/CFD - 1); "
+                  "v_z CG | CFD Us [m/s]; CG pressure [Pa]; air p [Pa], dp/dz [Pa/m]; mass flow CG flux | counter [kg/s]"]
+        for n, r in cg_rows:
+            o = r["orifice"]
+            lines.append(f"  {n:12s} t = {r['t']:<5g} {o['cg_solid_fraction']:.4f} | {o['cfd_solid_fraction']:.4f} "
+                         f"({100 * (o['cg_solid_fraction'] / o['cfd_solid_fraction'] - 1):+.1f} %);  "
+                         f"{o['cg_velocity_z']:.3f} | {o.get('cfd_solid_velocity_z', math.nan):.3f};  {o['cg_pressure']:6.1f};  "
+                         f"{o.get('air_pressure', math.nan):6.1f}, {o.get('air_dpdz', math.nan):7.0f};  "
+                         f"{o['cg_mass_flow_kg_s']:.4f} | {o['series_mass_flow_kg_s']:.4f}")
     if timings:
         lines += ["", "Stage times: wall [s] (on this machine, at its load) and CPU [s] of the stage's processes"]
         lines += [f"  {k:14s} wall {t['wall_s']:8.0f}   cpu {t['cpu_s']:8.0f}" for k, t in sorted(timings.items())]
@@ -381,6 +493,12 @@ def main():
     ap.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
     ap.add_argument("--fill-height", type=float, default=None, help="settled fill height [m]")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--cg-every", type=float, default=None,
+                    help="interval of the CG-field dumps [s] (default: the field interval; 0: none)")
+    ap.add_argument("--whole", action="store_true",
+                    help="until the silo is empty or the flow stops, in resumable chunks (--t-end: the limit)")
+    ap.add_argument("--chunk", type=float, default=P.WHOLE_CHUNK,
+                    help="--whole: granairFoam runs this long at a time [s], whole field intervals (default %(default)g)")
     ap.add_argument("--stage", default="all", choices=["all", "fill", "runs", "post"],
                     help="fill: the fills only; runs: the runs from existing fills, then post; post: post only")
     a = gc.cli.parse(ap, os.path.join(HERE, "run"))

@@ -4,6 +4,7 @@
     foam        OpenFOAM dictionaries and fields: read a field, set an entry, time folders
     template    the one template mechanism: a case's template/ with @KEY@ placeholders
     runner      run a step (log, mpirun, CPU time), a job pool, stop a run on a condition
+    chunks      long granairFoam runs in chunks from restart points, resumable, until finished
     dem         LIGGGHTS: loose packing, data files, STL walls, dumps, the discharge balance
     series      time series: CSV in and out, window means, steady rates
     powder      the discharge of a silo or hopper: DEM and continuum runs to the level contract
@@ -23,4 +24,4 @@ class CaseError(Exception):
     file, the key or the command and what was expected."""
 
 
-from . import foam, template, runner, dem, series, powder, closed_forms, levels, checks, plots, cli  # noqa: E402,F401
+from . import foam, template, runner, chunks, dem, series, powder, closed_forms, levels, checks, plots, cli  # noqa: E402,F401

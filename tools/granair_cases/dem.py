@@ -111,7 +111,8 @@ def read_dump(path):
     except StopIteration:
         raise CaseError(f"{path}: no 'ITEM: ATOMS' line (not a LIGGGHTS custom dump)")
     cols = lines[i].split()[2:]
-    data = np.array([[float(v) for v in line.split()] for line in lines[i + 1:] if line.strip()])
+    # reshaped: a snapshot of one particle or none (an emptied silo) keeps its columns
+    data = np.array([[float(v) for v in line.split()] for line in lines[i + 1:] if line.strip()]).reshape(-1, len(cols))
     return {c: data[:, k] for k, c in enumerate(cols)}
 
 

@@ -47,19 +47,21 @@ def flow_windows(t, discharged, width, extra=(), keep_last=0.0, tol=0.0):
     return series.window_means(t, dt, [rate] + list(extra), width, keep_last, tol)
 
 
-def continuum_outputs(r, out, t0, t1, window, keep_last, csv_name, level=None):
+def continuum_outputs(r, out, t0, t1, window, keep_last, csv_name, level=None, extra=()):
     """The outputs of a continuum run (r from continuum()) over the steady window
-    [t0, t1] (t1 None: to the end): out/csv_name (t, mass_flow_kg_s[, outlet_dpdz_Pa_m]:
-    window means; the per-step outlet flux oscillates from step to step) and, given
-    `level` (the contract's other keys), out/level.json. Returns dict(w: the least-squares
-    slope of the discharged mass, dpdz: the time mean of the outlet gradient or None,
-    centres, flow: the window means)."""
+    [t0, t1] (t1 None: to the end): out/csv_name (t, mass_flow_kg_s[, outlet_dpdz_Pa_m],
+    then the `extra` per-step columns [(name, values)]: window means; the per-step outlet
+    flux oscillates from step to step) and, given `level` (the contract's other keys),
+    out/level.json. Returns dict(w: the least-squares slope of the discharged mass, dpdz:
+    the time mean of the outlet gradient or None, centres, flow: the window means)."""
     t, dt, s = r["t"], r["dt"], r["series"]
     g = s.get("outlet_dpdz_Pa_m")
-    centres, means = series.window_means(t, dt, [r["flow"]] + ([g] if g is not None else []), window, keep_last)
+    cols = [r["flow"]] + ([g] if g is not None else []) + [c for _, c in extra]
+    centres, means = series.window_means(t, dt, cols, window, keep_last)
     os.makedirs(out, exist_ok=True)
     series.write_csv(os.path.join(out, csv_name), [("t", centres), ("mass_flow_kg_s", means[0])]
-                     + ([("outlet_dpdz_Pa_m", means[1])] if g is not None else []), fmt="{:.6g}")
+                     + ([("outlet_dpdz_Pa_m", means[1])] if g is not None else [])
+                     + list(zip([n for n, _ in extra], means[len(cols) - len(extra):])), fmt="{:.6g}")
     res = dict(w=series.slope(t, r["out"], t0, t1), centres=centres, flow=means[0],
                dpdz=None if g is None else series.time_mean(t, g, t0, t1, dt))
     if level is not None:
