@@ -79,8 +79,12 @@ CG_SPACING = 0.25         # profile spacing [d]
 # --- the fits ------------------------------------------------------------------
 # mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1) (Jop, Forterre & Pouliquen 2006);
 # phi(I) = phi_max - (phi_max - phi_min) I (the continuum solver's form,
-# Forterre & Pouliquen 2008; fitted where the flow is dense, I <= PHI_FIT_MAX).
-PHI_FIT_MAX = 0.4
+# Forterre & Pouliquen 2008). Both fitted to the dense, steady runs: measured
+# I <= FIT_I_MAX (phi >= ~0.52; beyond it the cell's flow turns collisional and
+# the servo wall bounces) and a block standard error of I within FIT_I_SE of I.
+# The others are reported (points.csv: in_fit 0) and plotted open.
+FIT_I_MAX = 0.4
+FIT_I_SE = 0.10
 
 # --- checks (study.py --check) ----------------------------------------------------
 # Stress balance: in steady plane shear sigma_xz and sigma_zz are uniform across
@@ -90,8 +94,9 @@ WALL_BALANCE = 0.05
 WALL_BALANCE_SE = 3.0     # or this many block standard errors of the CG value, if larger (high I: the wall bounces)
 # Uniformity: the rms deviation of sigma_xz over the bulk band from its mean.
 UNIFORMITY = 0.10
-# Quasi-static friction: frictional Hertz spheres without rolling resistance
-# give mu_s ~ 0.28 + 0.1..0.12 above a sliding friction of ~0.3 and saturate
-# near 0.35-0.40 (da Cruz et al. 2005: mu_s = 0.25 at mu_p = 0.4 in 2-D; Chialvo,
-# Sun & Sundaresan 2012, 3-D: 0.35 at mu_p = 0.5, 0.38 at 1.0; GDR MiDi 2004).
+# Quasi-static friction: DEM of frictional spheres without rolling resistance
+# gives a quasi-static stress ratio of about 0.3-0.4 once the sliding friction
+# exceeds ~0.3, rising slowly and saturating with it (Chialvo, Sun & Sundaresan
+# 2012, Phys. Rev. E 85:021305; Goncu & Luding 2013, Acta Geotech. 8:629; in
+# 2-D da Cruz et al. 2005). The band is that range widened by 0.05 each way.
 MU_LOW_I_BAND = (0.25, 0.45)

@@ -32,6 +32,7 @@ import json
 import math
 import os
 import random
+import re
 import time
 
 import numpy as np
@@ -272,7 +273,7 @@ def fit_mu(i, mu, se):
 
 
 def fit_phi(i, phi, se):
-    sel = i <= P.PHI_FIT_MAX
+    sel = np.ones(len(i), bool)
     w = 1.0 / np.maximum(se[sel], 1e-4) ** 2
     a = np.column_stack([np.ones(sel.sum()), -i[sel]])
     aw = a * np.sqrt(w)[:, None]
@@ -283,7 +284,7 @@ def fit_phi(i, phi, se):
     t = np.array([[1, 0], [1, -1]])                 # phi_min = phi_max - span
     cov2 = t @ cov @ t.T
     return dict(phi_max=c[0], phi_min=c[0] - c[1], phi_max_se=math.sqrt(cov2[0, 0]), phi_min_se=math.sqrt(cov2[1, 1]),
-                chi2_reduced=chi2 / dof, fitted_up_to_I=P.PHI_FIT_MAX)
+                chi2_reduced=chi2 / dof)
 
 
 def mu_model(i, f):
@@ -346,19 +347,22 @@ def post(a, runs, out):
             continue
         with open(os.path.join(base, "cell.json")) as fh:
             cellinfo = json.load(fh)
-        keys = ["I_target", "V", "I", "I_se", "mu", "mu_se", "mu_J2", "mu_J2_se", "mu_xz", "mu_xz_se", "wall_mu", "phi",
+        for r in rows:
+            r["in_fit"] = int(r["I"] <= P.FIT_I_MAX and r["I_se"] <= P.FIT_I_SE * r["I"])
+        keys = ["I_target", "in_fit", "V", "I", "I_se", "mu", "mu_se", "mu_J2", "mu_J2_se", "mu_xz", "mu_xz_se", "wall_mu", "phi",
                 "phi_se", "P", "P_se", "sigma_xz", "sigma_xz_se", "sigma_zz", "sigma_zz_se", "wall_tau", "wall_sigma",
                 "uniformity", "gamma_dot", "d", "gap", "snapshots", "cpu_s"]
         gc.series.write_rows(os.path.join(res_dir, "points.csv"), [{k: r[k] for k in keys} for r in rows],
                              fmt="{:.6g}")
         plot_profiles(name, profiles, os.path.join(res_dir, "profiles.png"))
-        i = np.array([r["I"] for r in rows])
+        fit_rows = [r for r in rows if r["in_fit"]]
+        i = np.array([r["I"] for r in fit_rows])
         fits, alt = {}, {}
-        if len(rows) >= 4:
-            fm = fit_mu(i, np.array([r["mu"] for r in rows]), np.array([r["mu_se"] for r in rows]))
-            fp = fit_phi(i, np.array([r["phi"] for r in rows]), np.array([r["phi_se"] for r in rows]))
-            fits = write_outputs(name, res_dir, rows, fm, fp, cell(name, a))
-            alt = {k: fit_mu(i, np.array([r[k] for r in rows]), np.array([r[f"{k}_se"] for r in rows]))
+        if len(fit_rows) >= 4:
+            fm = fit_mu(i, np.array([r["mu"] for r in fit_rows]), np.array([r["mu_se"] for r in fit_rows]))
+            fp = fit_phi(i, np.array([r["phi"] for r in fit_rows]), np.array([r["phi_se"] for r in fit_rows]))
+            fits = write_outputs(name, res_dir, fit_rows, fm, fp, cell(name, a))
+            alt = {k: fit_mu(i, np.array([r[k] for r in fit_rows]), np.array([r[f"{k}_se"] for r in fit_rows]))
                    for k in ("mu_xz", "mu_J2")}
             for f in alt.values():
                 f.pop("covariance")
@@ -378,6 +382,7 @@ def post(a, runs, out):
                                                         "the fit above is mu = |sigma_xz| / P, P = tr(sigma)/3"),
                              points=[{k: r[k] for k in keys} for r in rows],
                              cpu_s=round(cpu_total, 1))
+        summary[name]["continuum_now"] = {k: v for k, v in continuum_now()[name].items()}
         allrows[name] = (rows, fits)
         ref = os.path.join(HERE, "results", "calibration.json")
         if a.pressure != P.PRESSURE and os.path.exists(ref):
@@ -438,31 +443,53 @@ def plot_profiles(name, profiles, path):
     gc.plots.save(fig, path, dpi=100)
 
 
+def continuum_now():
+    """The mu(I) parameters the continuum cases use today: the MCC hopper's
+    rheology block (Remmelgas et al. 2019) and the wedge silo's (shear-test mu_s,
+    Jop et al. 2006 span and I0; cases/wedge-silo/parameters.py)."""
+    with open(os.path.join(HERE, "..", "mcc-hopper", "rheology", "muI")) as fh:
+        text = fh.read()
+    mcc = {k: float(re.search(rf"^\s*{key}\s+([0-9.eE+-]+);", text, re.M).group(1))
+           for k, key in (("mu_s", "muS"), ("mu_2", "mu2"), ("I0", "I0"), ("phi_max", "phiMax"), ("phi_min", "phiMin"))}
+    w = P.WEDGE
+    mu_s = w.fit_mu_s()[0]
+    phi_max = w.FILLS[10][1] / w.RHO_P
+    return {"mcc-hopper": dict(mcc, label="mcc-hopper continuum now (Remmelgas et al. 2019)"),
+            "wedge-silo": dict(mu_s=mu_s, mu_2=mu_s + w.JOP_MU_SPAN, I0=w.JOP_I0, phi_max=phi_max,
+                               phi_min=phi_max - w.DILATANCY_SPAN,
+                               label="wedge-silo continuum now (shear test + Jop et al. 2006)")}
+
+
 def plot_fits(allrows, out, pressure):
     plt = gc.plots.pyplot()
     colours = {"wedge-silo": "tab:blue", "mcc-hopper": "tab:red"}
-    lit = {"mcc-hopper": dict(mu_s=0.401, mu_2=0.908, I0=0.0465, label="mcc-hopper continuum now (Remmelgas 2019)")}
+    lit = continuum_now()
     for key, fname, ylab in (("mu", "mu_I.png", "mu = |sigma_xz| / P"), ("phi", "phi_I.png", "solid fraction phi")):
         fig, ax = plt.subplots(figsize=(6.5, 4.5))
         ii = np.logspace(-3.5, 0, 200)
         for name, (rows, fits) in allrows.items():
             col = colours.get(name, "k")
             i = np.array([r["I"] for r in rows])
-            ax.errorbar(i, [r[key] for r in rows], yerr=[2 * r[f"{key}_se"] for r in rows],
-                        xerr=[2 * r["I_se"] for r in rows], fmt="o", color=col, ms=4, capsize=2,
-                        label=f"{name} DEM (+- 2 s.e.)")
+            for inside in (1, 0):
+                sel = [r for r in rows if r["in_fit"] == inside]
+                if sel:
+                    ax.errorbar([r["I"] for r in sel], [r[key] for r in sel], yerr=[2 * r[f"{key}_se"] for r in sel],
+                                xerr=[2 * r["I_se"] for r in sel], fmt="o", color=col, ms=4, capsize=2,
+                                mfc=col if inside else "none",
+                                label=f"{name} DEM (+- 2 s.e.)" if inside else f"{name} DEM, not fitted (unsteady "
+                                f"or I > {P.FIT_I_MAX:g})")
             if fits and key == "mu":
                 ax.plot(ii, mu_model(ii, fits), color=col, label=f"fit: mu_s {fits['mu_s']:.3f}, mu_2 "
                                                                  f"{fits['mu_2']:.3f}, I0 {fits['I0']:.3g}")
                 ax.plot(i, [r["wall_mu"] for r in rows], "x", color=col, ms=5, label=f"{name}: top wall -F_x/F_z (= sigma_xz/sigma_zz)")
             if fits and key == "phi":
-                jj = ii[ii <= P.PHI_FIT_MAX]
+                jj = ii[ii <= P.FIT_I_MAX]
                 ax.plot(jj, fits["phi_max"] - (fits["phi_max"] - fits["phi_min"]) * jj, color=col,
                         label=f"fit: phi_max {fits['phi_max']:.3f}, phi_min {fits['phi_min']:.3f}")
-        if key == "mu":
-            for name, f in lit.items():
-                if name in allrows:
-                    ax.plot(ii, mu_model(ii, f), color=colours[name], ls="--", lw=0.8, label=f["label"])
+        for name, f in lit.items():
+            if name in allrows:
+                y = mu_model(ii, f) if key == "mu" else f["phi_max"] - (f["phi_max"] - f["phi_min"]) * ii
+                ax.plot(ii, y, color=colours[name], ls="--", lw=0.8, label=f["label"])
         ax.set(xscale="log", xlabel="inertial number I", ylabel=ylab, title=f"{ylab}: DEM shear cell, P = "
                f"{pressure:g} Pa")
         ax.legend(fontsize=7)
