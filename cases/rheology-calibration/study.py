@@ -15,10 +15,11 @@ Post (per run): granairCG profiles across the gap (coordinates Z, Gaussian
 kernel), time-averaged over the last AVERAGE_FRACTION of the run and per
 snapshot; in the bulk (BAND parcel diameters from either wall) the shear rate
 (slope of V_x), the pressure P = tr(sigma)/3, tau = sqrt(J2), sigma_xz,
-sigma_zz, phi, hence I = gammaDot d / sqrt(P / rho_p) and mu = tau / P, with
-standard errors from 5 blocks of snapshots. Fits: mu(I) = mu_s + (mu_2 - mu_s)
-/ (I0 / I + 1) (Jop et al. 2006), phi(I) = phi_max - (phi_max - phi_min) I,
-with their covariance. OUT: <material>/points.csv, profiles.png, muI (the
+sigma_zz, phi, hence I = gammaDot d / sqrt(P / rho_p) and mu = |sigma_xz| / P
+(also sqrt(J2) / P and sigma_xz / sigma_zz), with standard errors from 5
+blocks of snapshots. Fits over the dense steady runs (parameters.py FIT_I_MAX,
+FIT_I_SE): mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1) (Jop et al. 2006),
+phi(I) = phi_max - (phi_max - phi_min) I, with their covariance. OUT: <material>/points.csv, profiles.png, muI (the
 entries for a rheology block), rheology (a complete block), calibration.json,
 mu_I.png, phi_I.png.
 
@@ -512,6 +513,8 @@ def main():
                                                 else f"results-P{a.pressure:g}"))
     if not a.pressure > 0:
         ap.error(f"--pressure {a.pressure}: expected > 0 Pa")
+    if not all(0 < i <= 1 for i in a.I) or len(set(a.I)) != len(a.I):
+        ap.error(f"--I {' '.join(f'{i:g}' for i in a.I)}: expected distinct inertial numbers in (0, 1]")
     a.cell_x, a.gap, a.compact_steps = P.CELL_X, P.GAP, P.COMPACT_STEPS
     a.strain = dict(P.STRAIN)
     if a.quick:
