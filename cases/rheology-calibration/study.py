@@ -386,7 +386,7 @@ def post(a, runs, out):
         summary[name]["continuum_now"] = {k: v for k, v in continuum_now()[name].items()}
         allrows[name] = (rows, fits)
         ref = os.path.join(HERE, "results", "calibration.json")
-        if a.pressure != P.PRESSURE and os.path.exists(ref):
+        if (a.pressure != P.PRESSURE or a.cell != [P.CELL_X, P.GAP]) and os.path.exists(ref):
             with open(ref) as fh:
                 f0 = json.load(fh).get(name, {}).get("fit")
             if f0:
@@ -394,7 +394,7 @@ def post(a, runs, out):
                             difference=r["mu"] - mu_model(r["I"], f0)) for r in rows]
                 gc.series.write_rows(os.path.join(res_dir, f"vs_P{P.PRESSURE:g}_fit.csv"), dev, fmt="{:.6g}")
                 for x in dev:
-                    print(f"{name}, P = {a.pressure:g} Pa: I = {x['I']:.3g}: mu {x['mu']:.4f} +- {x['mu_se']:.4f}, "
+                    print(f"{name}, P = {a.pressure:g} Pa, cell {a.cell_x:g} x {a.gap:g} d: I = {x['I']:.3g}: mu {x['mu']:.4f} +- {x['mu_se']:.4f}, "
                           f"the P = {P.PRESSURE:g} Pa fit {x['mu_reference_fit']:.4f}: {x['difference']:+.4f}", flush=True)
         for r in rows:
             for what, val, ref, se in (("|sigma_xz| vs the top wall's shear traction", abs(r["sigma_xz"]), r["wall_tau"],
@@ -437,7 +437,7 @@ def plot_profiles(name, profiles, path):
     ax[0].set(xlabel="V_x / V_wall", ylabel="z / d")
     ax[1].set(xlabel="solid fraction phi", xlim=(0.3, 0.7))
     ax[2].set(xlabel="|sigma_xz| / P_wall", xlim=(0, 1))
-    ax[3].set(xlabel="mu = tau / P", xlim=(0, 1))
+    ax[3].set(xlabel="sqrt(J2) / P (granairCG friction_coefficient)", xlim=(0, 1))
     ax[0].legend(fontsize=7)
     fig.suptitle(f"{P.MATERIALS[name]['title']}: CG profiles across the gap (dotted: the bulk band)")
     fig.tight_layout()
@@ -509,13 +509,21 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--pressure", type=float, default=P.PRESSURE,
                     help=f"confining pressure [Pa] (default {P.PRESSURE:g}; another value: results-P<value>/ by default)")
-    a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "results" if a.pressure == P.PRESSURE
-                                                else f"results-P{a.pressure:g}"))
+    ap.add_argument("--cell", type=float, nargs=2, default=[P.CELL_X, P.GAP], metavar=("L", "H"),
+                    help=f"periodic length and gap in mean diameters (default {P.CELL_X:g} {P.GAP:g}; another: "
+                         "results-cell<L>x<H>/ by default)")
+    a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "results" + ("" if a.pressure == P.PRESSURE else
+                                                                    f"-P{a.pressure:g}")
+                                                + ("" if a.cell == [P.CELL_X, P.GAP] else
+                                                   f"-cell{a.cell[0]:g}x{a.cell[1]:g}")))
     if not a.pressure > 0:
         ap.error(f"--pressure {a.pressure}: expected > 0 Pa")
+    if not (a.cell[0] >= 4 and a.cell[1] >= 2 * P.BAND + 4):
+        ap.error(f"--cell {a.cell[0]:g} {a.cell[1]:g}: expected L >= 4 and H >= {2 * P.BAND + 4:g} diameters "
+                 f"(a bulk band {P.BAND:g} d from either wall)")
     if not all(0 < i <= 1 for i in a.I) or len(set(a.I)) != len(a.I):
         ap.error(f"--I {' '.join(f'{i:g}' for i in a.I)}: expected distinct inertial numbers in (0, 1]")
-    a.cell_x, a.gap, a.compact_steps = P.CELL_X, P.GAP, P.COMPACT_STEPS
+    a.cell_x, a.gap, a.compact_steps = a.cell[0], a.cell[1], P.COMPACT_STEPS
     a.strain = dict(P.STRAIN)
     if a.quick:
         a.material, a.I, a.cell_x, a.gap, a.compact_steps = ["mcc-hopper"], [0.1, 0.02], 6.0, 8.0, 6000
