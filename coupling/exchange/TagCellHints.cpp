@@ -33,7 +33,7 @@ int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
     const std::int32_t k = key(id);
     if (k < 0) return -1;
     if (j < lastIds_.size() && lastIds_[j] == k) return lastCells_[j];
-    ++sortedLookups_;
+    if (lastIds_.empty()) return -1;
     if (!sorted_) {
         byId_.resize(lastIds_.size());
         std::iota(byId_.begin(), byId_.end(), 0);
@@ -43,7 +43,9 @@ int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
     }
     const auto it = std::lower_bound(byId_.begin(), byId_.end(), k,
                                      [this](std::int32_t pos, std::int32_t tag) { return lastIds_[pos] < tag; });
-    return it != byId_.end() && lastIds_[*it] == k ? lastCells_[*it] : -1;
+    if (it == byId_.end() || lastIds_[*it] != k) return -1;  // a new particle
+    ++sortedLookups_;
+    return lastCells_[*it];
 }
 
 void TagCellHints::note(std::size_t j, std::int64_t id) {

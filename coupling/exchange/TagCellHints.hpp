@@ -34,8 +34,8 @@ public:
     // Tag of the particle at position j of this step (call for j = 0, 1, ...).
     void note(std::size_t j, std::int64_t id);
 
-    // Lookups that needed the sorted index (position and tag differed) since
-    // the last beginStep().
+    // Particles of the last step found at another position (a re-sort),
+    // since the last beginStep().
     std::int64_t sortedLookups() const { return sortedLookups_; }
 
     std::size_t bufferBytes() const;
