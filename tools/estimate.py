@@ -11,8 +11,8 @@ e.g. one written by `./granair run cases/wedge-silo --setup-only`); read from it
                      of system/blockMeshDict
   CFD step, time     system/controlDict: deltaT, endTime - startTime
   coupling interval  constant/couplingProperties: couplingInterval; air on/off
-  particles          log/granairFoam.log of a finished run (mean over its loop),
-                     or the fill's restart log; else give --particles.
+  particles          log/granairFoam.log of a finished run (mean over its loop);
+                     else give --particles.
 Every value can be overridden (--particles, --cells, --cfd-dt, --interval or
 --dem-dt, --time, --air). --calibration NAME: the DEM and coupling cost per
 particle-step measured on a run of that case (stored in costs.json by
