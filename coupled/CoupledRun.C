@@ -314,6 +314,7 @@ void CoupledRun::mapParticles()
         StageTimers::Scope s(timers_, StageTimers::Exchange);
         exchange_->forward(particles_, owned_);
     }
+    countSearch();
     StageTimers::Scope s(timers_, StageTimers::Mapping);
     const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
     if (settings_.oneWay)
@@ -350,9 +351,20 @@ void CoupledRun::mapVoidFraction()
         // are simply not in the field: the DEM alone decides where they go.
         exchange_->forward(particles_, owned_, ::granair::ParticleExchange::Outside::skip);
     }
+    countSearch();
     StageTimers::Scope s(timers_, StageTimers::Mapping);
     step_->voidFraction(owned_, demVoidFraction_->primitiveFieldRef().data());
     demVoidFraction_->correctBoundaryConditions();
+}
+
+
+void CoupledRun::countSearch()
+{
+    const ::granair::ExchangeStats& st = exchange_->stats();
+    search_[0] += st.particlesSent;
+    search_[1] += st.reordered;
+    search_[2] += st.hintMisses;
+    search_[3] += st.globalSearches;
 }
 
 
@@ -690,6 +702,15 @@ void CoupledRun::finish()
         os  << "Void fraction floor " << settings_.voidFractionFloor << " hit in " << hits
             << " cell-steps (smallest void fraction before the floor: " << minEps << ")\n"
             << "Air continuity error (cumulative): " << air_->cumulativeContinuityError() << "\n";
+    }
+    {
+        // How well the exchange's cell-search hints work (ParticleExchange.hpp).
+        std::int64_t total[4];
+        MPI_Allreduce(search_, total, 4, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+        const double n = total[0] > 0 ? double(total[0]) : 1.0;
+        os  << "Cell search: " << total[0] << " particle records; re-sorted since the last step "
+            << 100*total[1]/n << " %, not in their last cell or its neighbours " << 100*total[2]/n
+            << " %, whole-mesh searches " << 100*total[3]/n << " %\n";
     }
     timers_.report(MPI_COMM_WORLD, os);
     resources_.report(MPI_COMM_WORLD, long(stepsDone_), bufferBytes(), os);

@@ -18,7 +18,7 @@ The spheres start just touching (no overlap), so in the first coupling steps
 the column compresses under gravity and rings, the same way with and without
 air (the fluid force is small).
 
-    make_case.py --out DIR --particles N [--air on|off] [--steps S]
+    make_case.py --out DIR --particles N [--air on|off|forces-off] [--steps S]
                  [--np P] [--vtk-interval T]
     make_case.py --out DIR --width W --bed-height H [--box-height B] ...
 
@@ -27,6 +27,12 @@ multiples of 3, H ~ 2 W) so that W*W*H is close to N; the actual count is
 printed. --width/--bed-height/--box-height (in diameters) give W, H and the
 box height instead (the memory benchmark varies the bed in a fixed box). The case is
 decomposed along x for P ranks in both codes (same planes, balanced).
+
+--air forces-off is the fair reference of the coupling overhead: the whole
+coupled run (air solve, void fraction, mapping, exchange, granair's LIGGGHTS
+fixes) with `forces { drag off; pressureGradient off; buoyancy off; }`, so the
+particles feel no fluid force and the DEM solves the same problem as with
+`air off` (bench/README.md, "Two references").
 """
 
 import argparse
@@ -119,10 +125,11 @@ rho 1.2;      // air density [kg/m3]
 mu 1.8e-5;    // air dynamic viscosity [Pa s]
 """)
     output = f"output {{ vtkInterval {vtk_interval:.10g}; }}\n" if vtk_interval else ""
+    forces = "forces { drag off; pressureGradient off; buoyancy off; }\n" if air == "forces-off" else ""
     write(os.path.join(out, "constant/couplingProperties"), FOAM_HEADER.format(cls="dictionary", obj="couplingProperties") + f"""
 couplingInterval {COUPLING_INTERVAL};
-air {air};
-gravity (0 0 -9.81);
+air {"off" if air == "off" else "on"};
+{forces}gravity (0 0 -9.81);
 drag {{ type ErgunGidaspow; }}
 voidFraction {{ type centre; }}
 monitors {{ outlet {{ type patch; patch top; normal (0 0 1); }} }}
@@ -189,7 +196,7 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--particles", type=int)
     ap.add_argument("--width", type=int)
-    ap.add_argument("--air", choices=["on", "off"], default="on")
+    ap.add_argument("--air", choices=["on", "off", "forces-off"], default="on")
     ap.add_argument("--steps", type=int, default=20)
     ap.add_argument("--np", type=int, default=2)
     ap.add_argument("--bed-height", type=int)

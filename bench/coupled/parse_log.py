@@ -28,6 +28,10 @@ def parse_log(path):
         if not m:
             raise ValueError(f"{path}: no timing line '{label}' (did the run finish?)")
         out[key] = float(m.group(1))
+        # CPU time of the stage (max over ranks), where the log has it.
+        m = re.search(r"^\s+" + re.escape(label) + r"\s+" + _NUM + r" s(?:\s+" + _NUM + r" %)?\s+cpu\s+" + _NUM +
+                      r" s", text, re.M)
+        out["cpu_" + key] = float(m.group(3)) if m else float("nan")
     m = re.search(r"Coupling loop: " + _NUM + r" s wall for (\d+) coupling steps, " + _NUM +
                   r" particle-steps, " + _NUM + r" particle-steps/s", text)
     if not m:

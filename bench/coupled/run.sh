@@ -4,9 +4,11 @@
 #
 #   bench/coupled/run.sh [--sizes "1000 10000 100000"] [--steps 20] [--np 2]
 #                        [--repeat 1] [--work DIR] [--results DIR] [--name coupled]
+#                        [--configs "off forces-off on"]
 #
 # For every size: writes the packed-column case (make_case.py), meshes and
-# decomposes it, runs granairFoam with `air on;` and with `air off;` for
+# decomposes it, runs granairFoam with `air off;` (DEM only), with the air on
+# but its forces off (the fair reference) and with `air on;` for
 # --steps coupling steps (50 DEM steps each) on --np ranks, --repeat times
 # each, then report.py writes <results>/<name>.{md,csv} (default coupled). Needs a build with
 # OpenFOAM and LIGGGHTS (build/bin/granairFoam; GRANAIR_BUILD overrides).
@@ -16,7 +18,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 # shellcheck source=../../tools/case-lib.sh
 . "$here/../../tools/case-lib.sh"
 
-sizes="1000 10000 100000" steps=20 np=2 repeat=1 name=coupled
+sizes="1000 10000 100000" steps=20 np=2 repeat=1 name=coupled configs="off forces-off on"
 work="$GRANAIR_BUILD/bench-coupled" results="$here/../results"
 while [ $# -gt 0 ]; do
   case $1 in
@@ -27,7 +29,8 @@ while [ $# -gt 0 ]; do
     --work) work=$2; shift 2 ;;
     --results) results=$2; shift 2 ;;
     --name) name=$2; shift 2 ;;
-    *) echo "usage: $0 [--sizes \"N ...\"] [--steps S] [--np P] [--repeat R] [--work DIR] [--results DIR] [--name NAME]" >&2
+    --configs) configs=$2; shift 2 ;;
+    *) echo "usage: $0 [--sizes \"N ...\"] [--steps S] [--np P] [--repeat R] [--work DIR] [--results DIR] [--name NAME] [--configs \"off forces-off on\"]" >&2
        exit 2 ;;
   esac
 done
@@ -36,10 +39,10 @@ command -v granairFoam >/dev/null || { echo "bench/coupled: granairFoam not foun
 mkdir -p "$work"
 echo "$(date -u +%Y-%m-%dT%H:%MZ), $(nproc) cores, load average at start $(cut -d' ' -f1-3 /proc/loadavg)" \
   > "$work/machine.txt"
-# Repeats outermost and air off/on back to back, so both see the same load.
+# Repeats outermost and the configurations of a size back to back, so they see the same load.
 for r in $(seq 1 "$repeat"); do
   for n in $sizes; do
-    for air in off on; do
+    for air in $configs; do
       dir="$work/${n}_${air}_${r}"
       rm -rf "$dir"
       "$GRANAIR_PYTHON" "$here/make_case.py" --out "$dir" --particles "$n" --air "$air" --steps "$steps" --np "$np" \

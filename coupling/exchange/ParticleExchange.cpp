@@ -12,6 +12,7 @@
 #include "exchange/RankBoxIndex.hpp"
 #include "exchange/RecordMessage.hpp"
 #include "exchange/SparseExchange.hpp"
+#include "exchange/TagCellHints.hpp"
 
 namespace granair {
 
@@ -95,6 +96,7 @@ struct ParticleExchange::Impl {
     std::vector<int> outboxOfRank;  // rank -> outbox or -1 (O(nRanks), like the bounds)
     // Records this rank is itself a candidate for: dem indices (never sent).
     std::vector<int> selfDem, selfCell;
+    TagCellHints selfHints;  // each own particle's cell of the last forward(), by tag
     std::vector<char> selfMulti, selfKeep;
     // Particles with several candidates, and their candidates in rank order.
     struct Candidate {
@@ -158,7 +160,8 @@ struct ParticleExchange::Impl {
     // The phases of forward(), in order (see ParticleExchange.hpp).
     void findCandidates(const std::vector<ParticleState>& dem, ExchangeStats& stats, ForwardProblems& pr);
     void sendRecords(ExchangeStats& stats);
-    void locate(const CellLocator& mesh, const std::vector<ParticleState>& dem, ForwardProblems& pr);
+    void locate(const CellLocator& mesh, const std::vector<ParticleState>& dem, ExchangeStats& stats,
+                ForwardProblems& pr);
     void replyFound(ExchangeStats& stats);
     void chooseOwners(const std::vector<ParticleState>& dem, ForwardProblems& pr);
     void sendDecisions(ExchangeStats& stats);
@@ -171,7 +174,7 @@ void ParticleExchange::Impl::findCandidates(const std::vector<ParticleState>& de
     for (int b = 0; b < nOutboxes; ++b) outboxOfRank[outboxes[b].rank] = -1;
     nOutboxes = 0;
     selfDem.clear();
-    // selfCell keeps the last step's cells: they are the first hints in locate().
+    // selfCell keeps the last step's cells: locate() hands them to selfHints.
     selfMulti.clear();
     multis.clear();
     multiCandidates.clear();
@@ -237,30 +240,38 @@ void ParticleExchange::Impl::sendRecords(ExchangeStats& stats) {
 
 // ---- 3. locate: own records, then inbound ones ----
 void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<ParticleState>& dem,
-                                    ForwardProblems& pr) {
+                                    ExchangeStats& stats, ForwardProblems& pr) {
     // Two hints before the locator's global search (which costs tens of
     // microseconds per particle on thin or skewed meshes):
-    // - own particles: the cell found at the same position of the list in the
-    //   last forward(). The DEM keeps its local order between re-sorts, and a
-    //   particle moves less than a cell per coupling step, so this is mostly
-    //   the particle's own last cell (no per-particle storage beyond the
-    //   selfCell list this class keeps anyway);
+    // - own particles: the particle's own cell of the last forward(), found by
+    //   its tag (TagCellHints: right after a LIGGGHTS re-sort too). A particle
+    //   moves less than a cell per coupling step, so this mostly hits;
     // - then the previous record's cell: DEM codes sort their particles in
     //   space, so neighbours in the list are mostly in the same or an
-    //   adjacent cell (this also covers the steps right after a re-sort).
+    //   adjacent cell (new particles, inbound records).
     // Hints only choose where to look first; a wrong one never gives a wrong cell.
     int hint = -1;
-    const std::size_t previous = selfCell.size();
+    selfHints.beginStep(selfCell);
     selfCell.resize(selfDem.size());
     for (std::size_t j = 0; j < selfDem.size(); ++j) {
         const ParticleState& p = dem[selfDem[j]];
-        const int near = j < previous ? mesh.findCellNear(p.x, selfCell[j]) : -1;
-        selfCell[j] = near >= 0 ? near : mesh.findCell(p.x, hint);
-        if (selfCell[j] >= 0) hint = selfCell[j];
-        if (selfCell[j] < 0 && !selfMulti[j])
+        selfHints.note(j, p.id);
+        int cell = mesh.findCellNear(p.x, selfHints.lastCell(j, p.id));
+        if (cell < 0) {
+            ++stats.hintMisses;
+            cell = mesh.findCellNear(p.x, hint);
+            if (cell < 0) {
+                ++stats.globalSearches;
+                cell = mesh.findCell(p.x, -1);
+            }
+        }
+        selfCell[j] = cell;
+        if (cell >= 0) hint = cell;
+        if (cell < 0 && !selfMulti[j])
             pr.outsideMesh("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank,
                            "'s CFD box but in none of its cells)");
     }
+    stats.reordered = selfHints.sortedLookups();
     nInbound = static_cast<int>(inbox.messages.size());
     if (static_cast<int>(inbound.size()) < nInbound) inbound.resize(nInbound);
     cells.clear();
@@ -281,7 +292,11 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<P
         std::size_t mi = 0;
         for (std::size_t k = 0; k < in.layout.nRecords; ++k) {
             const ParticleState p = record::read(in.records, k);
-            const int cell = mesh.findCell(p.x, hint);
+            int cell = mesh.findCellNear(p.x, hint);
+            if (cell < 0) {
+                ++stats.globalSearches;
+                cell = mesh.findCell(p.x, -1);
+            }
             if (cell >= 0) hint = cell;
             cells.push_back(cell);
             if (mi < in.layout.nMulti && record::multiAt(in.layout, mi) == static_cast<std::int64_t>(k)) {
@@ -501,7 +516,7 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, OwnedParti
     problems.outsidePolicy = outsidePolicy;
     m.findCandidates(dem, stats_, problems);
     m.sendRecords(stats_);
-    m.locate(mesh_, dem, problems);
+    m.locate(mesh_, dem, stats_, problems);
     m.replyFound(stats_);
     m.chooseOwners(dem, problems);
     m.sendDecisions(stats_);
@@ -589,7 +604,7 @@ std::size_t ParticleExchange::bufferBytes() const {
                     capacityBytes(m.inbox.bytes) + capacityBytes(m.inbox.messages) +
                     capacityBytes(m.inbound) + capacityBytes(m.cells) + capacityBytes(m.sendRoutes) +
                     capacityBytes(m.routeDem) + capacityBytes(m.recvRoutes) + capacityBytes(m.values) +
-                    capacityBytes(m.requests) + capacityBytes(cfdBounds_);
+                    capacityBytes(m.requests) + capacityBytes(cfdBounds_) + m.selfHints.bufferBytes();
     for (const Impl::Outbox& o : m.outboxes)
         n += capacityBytes(o.message) + capacityBytes(o.multi) + capacityBytes(o.dem) +
              capacityBytes(o.found) + capacityBytes(o.keep);

@@ -108,6 +108,14 @@ struct ExchangeStats {
     int partners = 0;                // distinct ranks sent to (excluding self)
     std::int64_t outside = 0;        // particles in no rank's cells (Outside::skip), counted once
                                      // over all ranks (sum them for the total)
+    // Cell search (locate): own particles not in their last cell (nor its face
+    // neighbours; new particles included), own particles of the last forward()
+    // now at another list position (a DEM re-sort; their hint found by tag),
+    // and searches of the whole local mesh (all hints missed; own and inbound
+    // records).
+    std::int64_t hintMisses = 0;
+    std::int64_t reordered = 0;
+    std::int64_t globalSearches = 0;
 };
 
 class ParticleExchange {

@@ -2,4 +2,5 @@
 list(APPEND GRANAIR_COUPLING_SOURCES
   exchange/SparseExchange.cpp
   exchange/RankBoxIndex.cpp
+  exchange/TagCellHints.cpp
   exchange/ParticleExchange.cpp)

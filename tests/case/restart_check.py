@@ -1,4 +1,4 @@
-"""restart_check.py A B [--tol REL]: run A (0 -> 2T in one go) and run B
+"""restart_check.py A B [--tol REL] [--label TEXT]: run A (0 -> 2T in one go) and run B
 (0 -> T, then a restart from T -> 2T) of tests/data/restart-column must agree
 to round-off (issue 13, item 4):
 
@@ -18,6 +18,9 @@ Round-off: a restart changes the order of LIGGGHTS' atoms and neighbour lists
 (and so of the contact-force sums) and of OpenFOAM's nothing; the runs are 8
 coupling steps of 50 DEM steps, so differences stay near 1e-16 of the
 values, far below REL.
+
+tests/case/ranks.sh uses the same comparison for a serial run A and a run B
+on more ranks (reconstructed, --label says so).
 """
 
 import glob
@@ -77,6 +80,8 @@ def balance(case):
 def main():
     a, b = sys.argv[1], sys.argv[2]
     rel = float(sys.argv[sys.argv.index("--tol") + 1]) if "--tol" in sys.argv else 1e-9
+    # --label: what B is (tests/case/ranks.sh compares NP ranks with 1 rank the same way)
+    label = sys.argv[sys.argv.index("--label") + 1] if "--label" in sys.argv else "T + restart + T vs 2T"
     ok = True
     ha, ra = series(a)
     hb, rb = series(b)
@@ -88,7 +93,7 @@ def main():
         for x, y in zip(ra, rb):
             for u, w in zip(x, y):
                 worst = max(worst, abs(u - w) / (max(abs(u), abs(w)) + 1e-30))
-    print(f"restart_check: time series {len(ra)} rows each, same t; largest relative difference {worst:.2e}")
+    print(f"restart_check ({label}): time series {len(ra)} rows each, same t; largest relative difference {worst:.2e}")
     ok &= worst <= rel
 
     tname = last_time_dir(a)
@@ -128,7 +133,7 @@ def main():
     print(f"  accounting (inserted, present, removed, lost, discharged): {ba} vs {bb}")
     ok &= ba == bb
     if not ok:
-        print(f"FAILED: T + restart + T differs from 2T by more than {rel:g}")
+        print(f"FAILED: {label}: differences above {rel:g}")
     sys.exit(0 if ok else 1)
 
 

@@ -1,0 +1,60 @@
+// TagCellHints.cpp: see TagCellHints.hpp.
+#include "exchange/TagCellHints.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+#include "core/CapacityBytes.hpp"
+
+namespace granair {
+
+std::int32_t TagCellHints::key(std::int64_t id) {
+    // LIGGGHTS 3.8 tags are int; anything else gets a key no tag has (a
+    // wrong or missing hint only costs a search, never a wrong cell).
+    return id >= 0 && id <= std::numeric_limits<std::int32_t>::max() ? static_cast<std::int32_t>(id) : -1;
+}
+
+void TagCellHints::beginStep(std::vector<int>& cells) {
+    std::swap(lastCells_, cells);
+    std::swap(lastIds_, ids_);
+    // A forward() that failed part-way noted fewer tags than it found cells,
+    // or the other way round: keep the aligned part only.
+    const std::size_t n = std::min(lastIds_.size(), lastCells_.size());
+    lastIds_.resize(n);
+    lastCells_.resize(n);
+    ids_.clear();
+    sorted_ = false;
+    sortedLookups_ = 0;
+}
+
+int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
+    const std::int32_t k = key(id);
+    if (k < 0) return -1;
+    if (j < lastIds_.size() && lastIds_[j] == k) return lastCells_[j];
+    if (lastIds_.empty()) return -1;
+    if (!sorted_) {
+        byId_.resize(lastIds_.size());
+        std::iota(byId_.begin(), byId_.end(), 0);
+        std::sort(byId_.begin(), byId_.end(),
+                  [this](std::int32_t a, std::int32_t b) { return lastIds_[a] < lastIds_[b]; });
+        sorted_ = true;
+    }
+    const auto it = std::lower_bound(byId_.begin(), byId_.end(), k,
+                                     [this](std::int32_t pos, std::int32_t tag) { return lastIds_[pos] < tag; });
+    if (it == byId_.end() || lastIds_[*it] != k) return -1;  // a new particle
+    ++sortedLookups_;
+    return lastCells_[*it];
+}
+
+void TagCellHints::note(std::size_t j, std::int64_t id) {
+    if (ids_.size() <= j) ids_.resize(j + 1, -1);
+    ids_[j] = key(id);
+}
+
+std::size_t TagCellHints::bufferBytes() const {
+    return capacityBytes(ids_) + capacityBytes(lastIds_) + capacityBytes(lastCells_) + capacityBytes(byId_);
+}
+
+}  // namespace granair

@@ -1,0 +1,52 @@
+// TagCellHints.hpp: the cell each of this rank's own particles was found in
+// at the last forward(), looked up by the particle's atom tag.
+//
+// The exchange's first hint for a particle is its own cell of the last
+// coupling step (a particle moves less than a cell per step, so the face-plane
+// test of that cell nearly always hits). Keyed by list position alone, the
+// hint goes wrong for every particle after LIGGGHTS re-sorts its atoms
+// (`atom_modify sort`, every 1000 steps by default): each then failed the
+// test of a stranger's cell and its 6 neighbours before the next hint was
+// tried. Here the position is checked against the tag (no re-sort since: the
+// same tag at the same position, one compare) and, where it differs, the tag
+// is looked up in the last step's tags, sorted once per forward() on the first
+// mismatch (binary search). Cost: 16 bytes per own particle (this step's and
+// the last step's tags, the sorted index, the last cells; tags are LIGGGHTS
+// 3.8's int).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace granair {
+
+class TagCellHints {
+public:
+    // Start a forward(): the cells found in the last one (`cells`, in the
+    // order their tags were given to note()) become the hints; `cells`
+    // receives the storage of the hints before them (contents unspecified),
+    // for the caller to refill.
+    void beginStep(std::vector<int>& cells);
+
+    // The cell the particle with tag `id`, now at position j of this step's
+    // list, was found in at the last step; -1 if it was not there.
+    int lastCell(std::size_t j, std::int64_t id);
+
+    // Tag of the particle at position j of this step (call for j = 0, 1, ...).
+    void note(std::size_t j, std::int64_t id);
+
+    // Particles of the last step found at another position (a re-sort),
+    // since the last beginStep().
+    std::int64_t sortedLookups() const { return sortedLookups_; }
+
+    std::size_t bufferBytes() const;
+
+private:
+    static std::int32_t key(std::int64_t id);
+    std::vector<std::int32_t> ids_, lastIds_;
+    std::vector<int> lastCells_;
+    std::vector<std::int32_t> byId_;  // positions in lastIds_, ascending tag
+    bool sorted_ = false;
+    std::int64_t sortedLookups_ = 0;
+};
+
+}  // namespace granair
