@@ -61,7 +61,10 @@ TEST_CASE("rheologies: bad input", "[rheology][input]") {
                           Contains("constant/granularProperties") && Contains("mu2 = 0.4") &&
                               Contains("mu_2 > mu_s"));
         CHECK_THROWS_WITH(create(mcc + "etaMax -3;"), Contains("etaMax = -3"));
-        CHECK_THROWS_WITH(create(mcc + "pMin 0;"), Contains("pMin = 0"));
+        CHECK_THROWS_WITH(create(mcc + "pMin 1;"), Contains("constant/granularProperties") && Contains("pMin") &&
+                                                       Contains("removed") && Contains("no tension"));
+        CHECK_THROWS_WITH(create(mcc + "etaMin 0;"), Contains("etaMin = 0"));
+        CHECK_THROWS_WITH(create(mcc + "etaMin 2e5;"), Contains("etaMax = 100000") && Contains("> etaMin"));
         CHECK_THROWS_WITH(create(mcc + "gammaDotMin 0;"), Contains("gammaDotMin = 0"));
         CHECK_THROWS_WITH(create(mcc + "phiMin 0.7;"), Contains("phiMin = 0.7"));
         CHECK_THROWS_WITH(create(mcc + "d 0;"), Contains("d = 0"));
