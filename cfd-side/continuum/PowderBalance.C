@@ -34,6 +34,28 @@ scalar revolutionScale(const fvMesh& mesh)
     return 1;
 }
 
+// Cells whose face touches the outlet patch and their face neighbours: the
+// outlet itself holds p = 0, so its first layers are stress-free by the
+// boundary condition, not by the numerics (the neighbours across processor
+// boundaries are not marked: a decomposed run counts a few more cells).
+boolList outletLayers(const fvMesh& mesh, label patchi)
+{
+    boolList mark(mesh.nCells(), false);
+    const labelUList& first = mesh.boundary()[patchi].faceCells();
+    for (const label c : first)
+    {
+        mark[c] = true;
+    }
+    for (const label c : first)
+    {
+        for (const label n : mesh.cellCells()[c])
+        {
+            mark[n] = true;
+        }
+    }
+    return mark;
+}
+
 } // namespace
 
 PowderBalance::PowderBalance
@@ -54,7 +76,12 @@ PowderBalance::PowderBalance
     air_(withAir),
     initialMass_(0),
     discharged_(0),
-    lastFlow_(0)
+    lastFlow_(0),
+    steps_(0),
+    unconvergedSteps_(0),
+    maxOuter_(0),
+    sumOuter_(0),
+    lastTensionFraction_(0)
 {
     if (outletPatch_ < 0)
     {
@@ -63,6 +90,7 @@ PowderBalance::PowderBalance
             "constant/granularProperties, key 'outletPatch': no boundary patch named '", outletPatch, "'"
         );
     }
+    nearOutlet_ = outletLayers(mesh, outletPatch_);
     const uniformDimensionedVectorField& g = meshObjects::gravity::New(mesh.time());
     if (mag(g.value()) > SMALL) up_ = -g.value()/mag(g.value());
     initialMass_ = powderMass(alpha);
@@ -74,6 +102,12 @@ PowderBalance::PowderBalance
     {
         columns.push_back({"outlet_dpdz_Pa_m", "Pa/m"});
         columns.push_back({"air_p_min_Pa", "Pa"});
+    }
+    for (const ::granair::Column& c : std::vector<::granair::Column>{
+             {"outer_correctors", "-"}, {"outer_residual_U", "-"}, {"outer_residual_p", "-"},
+             {"outer_converged", "-"}, {"tension_fraction", "-"}})
+    {
+        columns.push_back(c);
     }
     mkDir(directory);
     writer_ = std::make_unique<::granair::TimeSeriesWriter>(MPI_COMM_WORLD, directory/"timeSeries", columns);
@@ -92,7 +126,14 @@ scalar PowderBalance::relativeBalanceError(const volScalarField& alpha) const
     return (powderMass(alpha) + discharged_ - initialMass_)/initialMass_;
 }
 
-void PowderBalance::record(const volScalarField& alpha, const surfaceScalarField& alphaPhi, const AirPercolation& air)
+void PowderBalance::record
+(
+    const volScalarField& alpha,
+    const surfaceScalarField& alphaPhi,
+    const AirPercolation& air,
+    const volScalarField& p,
+    const StepStatistics& step
+)
 {
     const scalar dt = mesh_.time().deltaTValue();
     scalar outletFlux = 0;
@@ -116,7 +157,36 @@ void PowderBalance::record(const volScalarField& alpha, const surfaceScalarField
         row.push_back(air.patchGradient(outletPatch_, up_));
         row.push_back(gMin(air.pAir().primitiveField()));
     }
+
+    label packed = 0, tension = 0;
+    forAll(alpha, celli)
+    {
+        if (alpha[celli] > 0.99 && !nearOutlet_[celli])
+        {
+            ++packed;
+            if (p[celli] <= 0) ++tension;
+        }
+    }
+    reduce(packed, sumOp<label>());
+    reduce(tension, sumOp<label>());
+    lastTensionFraction_ = packed > 0 ? scalar(tension)/packed : scalar(0);
+
+    ++steps_;
+    sumOuter_ += step.outerCorrectors;
+    maxOuter_ = max(maxOuter_, step.outerCorrectors);
+    if (!step.converged) ++unconvergedSteps_;
+    for (const scalar v : {scalar(step.outerCorrectors), step.residualU, step.residualP,
+                           scalar(step.converged ? 1 : 0), lastTensionFraction_})
+    {
+        row.push_back(v);
+    }
     writer_->append(row);
+}
+
+void PowderBalance::reportIterations() const
+{
+    Info<< "outer correctors: " << steps_ << " steps, mean " << (steps_ ? sumOuter_/steps_ : 0) << ", most "
+        << maxOuter_ << " per step; steps not converged within nOuterCorrectors: " << unconvergedSteps_ << endl;
 }
 
 } // namespace granair
