@@ -34,17 +34,9 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "pylib"))
-import closed_forms as cf   # noqa: E402
+from granair_cases import CaseError as CompareError, closed_forms as cf, levels, plots, series as ts
 
-LEVELS = ["closed-form", "continuum", "cg-dem", "cg-dem-cfd", "dem-cfd"]
-LEVEL_KEYS = ("case", "level", "model", "b_mm", "air", "steady_mass_flow_kg_s",
-              "steady_window_s", "outlet_dpdz_Pa_m", "wall_time_s", "cores", "timeseries")
-
-
-class CompareError(Exception):
-    pass
+LEVELS = levels.LEVELS
 
 
 # ------------------------------------------------------------------ inputs
@@ -97,16 +89,7 @@ def load_spec(case_dir):
 
 
 def read_level(path):
-    with open(path) as fh:
-        try:
-            d = json.load(fh)
-        except json.JSONDecodeError as e:
-            raise CompareError(f"{path}: not valid JSON ({e})")
-    missing = [k for k in LEVEL_KEYS if k not in d]
-    if missing:
-        raise CompareError(f"{path}: key(s) {', '.join(missing)} missing (see docs/fidelity-levels.md)")
-    if d["level"] not in LEVELS:
-        raise CompareError(f"{path}: level {d['level']!r} unknown; known: {', '.join(LEVELS)}")
+    d = levels.read(path)
     d["_path"] = path
     d["_dir"] = os.path.dirname(path)
     return d
@@ -116,16 +99,10 @@ def read_series(level):
     path = os.path.join(level["_dir"], level["timeseries"])
     if not os.path.exists(path):
         raise CompareError(f"{level['_path']}: key 'timeseries' names {path}, which does not exist")
-    with open(path) as fh:
-        rows = list(csv.reader(fh))
-    head = rows[0]
+    cols = ts.read_csv(path, min_rows=0)
     for col in ("t", "mass_flow_kg_s"):
-        if col not in head:
-            raise CompareError(f"{path}: column {col} missing (header {','.join(head)})")
-    cols = {h: [] for h in head}
-    for r in rows[1:]:
-        for h, v in zip(head, r):
-            cols[h].append(float(v))
+        if col not in cols:
+            raise CompareError(f"{path}: column {col} missing (header {','.join(cols)})")
     return cols
 
 
@@ -236,9 +213,7 @@ def group_of(level):
 
 
 def plot(rows, band, ratio, out, title):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = plots.pyplot()
     # one colour per dry run and the run with air checked against it (the
     # Crewdson pair), one per unpaired run: dry dotted, with air solid
     colour, n = {}, 0
@@ -275,8 +250,7 @@ def plot(rows, band, ratio, out, title):
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "mass_flow.png"), dpi=120)
-    plt.close(fig)
+    plots.save(fig, os.path.join(out, "mass_flow.png"))
 
     fig, ax = plt.subplots(figsize=(8, 6.0))
     n = 0
@@ -296,8 +270,7 @@ def plot(rows, band, ratio, out, title):
         ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "outlet_dpdz.png"), dpi=120)
-    plt.close(fig)
+    plots.save(fig, os.path.join(out, "outlet_dpdz.png"))
 
 
 def main(argv=None):
@@ -372,7 +345,7 @@ def main(argv=None):
              f"Steady mass flow for the whole {'silo (full depth)' if spec['orifice'] == 'slot' else 'hopper'}; "
              f"outlet dp/dz is the mean air pressure gradient at the orifice over the steady window (z up: "
              f"negative = suction). Crewdson check: W(dry, same level) x sqrt(1 + (dp/dz)/(rho_b g)) with "
-             f"rho_b = {spec['rho_b']:g} kg/m3. Closed forms: tools/pylib/closed_forms.py.", "",
+             f"rho_b = {spec['rho_b']:g} kg/m3. Closed forms: tools/granair_cases/closed_forms.py.", "",
              "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     lines += ["| " + " | ".join(str(x) for x in line) + " |" for line in body]
     if missing:

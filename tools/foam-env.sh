@@ -15,6 +15,8 @@ if [ -z "${GRANAIR_PYTHON:-}" ]; then
   if [ -x /usr/bin/python3 ]; then GRANAIR_PYTHON=/usr/bin/python3; else GRANAIR_PYTHON=python3; fi
 fi
 export GRANAIR_PYTHON
+# The case layer (tools/granair_cases, docs/cases.md): cases import it by name.
+case ":${PYTHONPATH:-}:" in *":$GRANAIR_ROOT/tools:"*) ;; *) export PYTHONPATH="$GRANAIR_ROOT/tools${PYTHONPATH:+:$PYTHONPATH}" ;; esac
 # Open MPI: allow root (CI, containers) and more ranks than cores.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1

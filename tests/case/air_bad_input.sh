@@ -8,9 +8,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$1
 rm -rf "$work"; mkdir -p "$work"
 valid=$work/valid
-cp -r "$here/../../cases/ergun-packed-bed/template" "$valid"
-find "$valid" -type f -exec sed -i -e 's/BED_EPS/0.4/; s/END_TIME/0.002/; s/DELTA_T/0.001/; s/RHO/1.2/; s/MU/1.8e-5/' \
-  -e 's/DRAG_LAW/ErgunGidaspow/; s/DIAMETER/225e-6/; s/U_SUPERFICIAL/0.01/' {} +
+"$GRANAIR_PYTHON" -m granair_cases render "$here/../../cases/ergun-packed-bed/template" "$valid" \
+  EPS=0.4 END_TIME=0.002 DT=0.001 RHO=1.2 MU=1.8e-5 DRAG_LAW=ErgunGidaspow D=225e-6 U_S=0.01 \
+  NP=1 WRITE_EVERY=100000 "INLET_VOIDFRACTION=type zeroGradient;"
 (cd "$valid" && blockMesh >log.blockMesh 2>&1 && setFields >log.setFields 2>&1)
 (cd "$valid" && granairAirFoam > log.ok 2>&1) || { echo "the valid case failed:"; tail "$valid/log.ok"; exit 1; }
 

@@ -7,12 +7,11 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../tools/case-lib.sh"
 work=$1
-case_dir=$here/../../cases/mcc-hopper
 rm -rf "$work"; mkdir -p "$work"
+case_dir=$here/../../cases/mcc-hopper
 valid=$work/valid
-cp -r "$case_dir/template" "$valid"
-"$GRANAIR_PYTHON" "$case_dir/mesh.py" 6 "$valid"
-sed -i 's/^endTime .*/endTime         1e-4;/' "$valid/system/controlDict"
+"$case_dir/Allrun" --setup-only --mesh 6 --end 1e-4 --out "$work/setup" > /dev/null
+mv "$work/setup/runs/N6" "$valid"
 (cd "$valid" && blockMesh >log.blockMesh 2>&1 && setAlphaField >log.setAlphaField 2>&1)
 (cd "$valid" && granairContinuumFoam > log.ok 2>&1) || { echo "the valid case failed:"; tail "$valid/log.ok"; exit 1; }
 
@@ -57,6 +56,14 @@ check "$d" "key 'air.model': unknown air model 'darcy'" || fails=$((fails+1))
 
 d=$(variant missing_alpha); rm "$d/0/alpha.powder"
 check "$d" "0/alpha.powder" || fails=$((fails+1))
+
+# time controls that cannot work (issue 13, item 6; was SIGFPE, exit 136):
+# exit 1 with the key named
+d=$(variant zero_deltaT); sed -i 's/^deltaT .*/deltaT          0;/' "$d/system/controlDict"
+EXPECT_RC=1 check "$d" "controlDict\", key 'deltaT' = 0: expected a time step > 0" || fails=$((fails+1))
+
+d=$(variant zero_maxCo); sed -i 's/^maxCo .*/maxCo           0;/' "$d/system/controlDict"
+EXPECT_RC=1 check "$d" "key 'maxCo' = 0: expected a Courant number > 0" || fails=$((fails+1))
 
 [ $fails -eq 0 ] && echo "mcc_hopper_bad_input: all variants stopped with the expected message" \
   || { echo "mcc_hopper_bad_input: $fails variant(s) wrong"; exit 1; }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The air solver's face fluxes and face pressure on processor faces: the
-# 4-cell short bed (cases/ergun-packed-bed/short_bed.py, d = 225 um, Re 1 and
+# 4-cell short bed (cases/ergun-packed-bed/study.py --short-bed, d = 225 um, Re 1 and
 # 100) with both bed edges on processor faces (manual decomposition: the bed
 # on rank 1, plenum and freeboard on rank 0) gives the serial p and U. Every
 # written time is compared (every 25 steps, from the start-up transient to
@@ -21,7 +21,7 @@ for src in "$work"/generate/runs-short/*/; do
     sed -i 's/writeInterval [0-9]*;/writeInterval 25;/' "$c/system/controlDict"
   done
   c="$work/parallel/$name"
-  # 6 plenum, 4 bed, 6 freeboard cells (short_bed.py)
+  # 6 plenum, 4 bed, 6 freeboard cells (ergun-packed-bed/parameters.py)
   { echo 'FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }'
     echo '16 ( 0 0 0 0 0 0 1 1 1 1 0 0 0 0 0 0 )'; } > "$c/constant/cellDecomposition"
   { echo 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }'
@@ -32,11 +32,10 @@ for src in "$work"/generate/runs-short/*/; do
      && mpirun -np 2 granairAirFoam -parallel > log.granairAirFoam 2>&1 \
      && reconstructPar > log.reconstructPar 2>&1)
 done
-"$GRANAIR_PYTHON" - "$work" "$here/../../../cases/ergun-packed-bed" <<'PY'
+"$GRANAIR_PYTHON" - "$work" <<'PY'
 import os, sys
+from granair_cases.foam import read_field
 work = sys.argv[1]
-sys.path.insert(0, sys.argv[2])
-import short_bed as sb
 worst, ok = 0.0, True
 for name in sorted(os.listdir(os.path.join(work, "serial"))):
     a, b = os.path.join(work, "serial", name), os.path.join(work, "parallel", name)
@@ -49,8 +48,8 @@ for name in sorted(os.listdir(os.path.join(work, "serial"))):
             print(f"{name}: the decomposition does not put both bed edges on processor faces"); ok = False
     for t in times:
         for f in ("p", "U"):
-            x = sb.read_internal(os.path.join(a, t, f), 16)
-            y = sb.read_internal(os.path.join(b, t, f), 16)
+            x = read_field(os.path.join(a, t, f), 16)
+            y = read_field(os.path.join(b, t, f), 16)
             if f == "U":
                 x, y = [v[2] for v in x], [v[2] for v in y]
             scale = max(abs(v) for v in x)

@@ -21,6 +21,16 @@ TEST_CASE("coupling settings read the case dictionary", "[coupler]") {
     CHECK(s.voidFraction->name() == "centre");
     CHECK_FALSE(s.buoyancyForce);
     CHECK(s.pressureGradientForce);
+    CHECK_FALSE(s.oneWay);
+}
+
+TEST_CASE("momentum coupling is two-way by default, one-way on request", "[coupler]") {
+    const std::string base = "couplingInterval 5; drag { type ErgunGidaspow; } voidFraction { type centre; } ";
+    CHECK(CouplingSettings::read(Dictionary::fromString(base + "momentumCoupling one-way;", "cp")).oneWay);
+    CHECK_FALSE(CouplingSettings::read(Dictionary::fromString(base + "momentumCoupling two-way;", "cp")).oneWay);
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(base + "momentumCoupling oneway;", "cp")),
+                      Contains("cp") && Contains("momentumCoupling") && Contains("'oneway'") &&
+                          Contains("expected two-way"));
 }
 
 TEST_CASE("coupling settings reject bad values naming file and key", "[coupler]") {
@@ -37,7 +47,14 @@ TEST_CASE("coupling settings reject bad values naming file and key", "[coupler]"
     CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(
                           "couplingInterval 5; drag { type Nope; } voidFraction { type centre; }", "cp")),
                       Contains("unknown drag law 'Nope'") && Contains("ErgunGidaspow"));
-    // with the air off no models are needed
+    // with the air off no models are needed: no drag law, the centre void
+    // fraction for the output field
     auto off = CouplingSettings::read(Dictionary::fromString("couplingInterval 5; air off;", "cp"));
     CHECK_FALSE(off.airOn);
+    CHECK_FALSE(off.drag);
+    CHECK(off.voidFraction->name() == "centre");
+    // ... but the ones given are still checked
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(
+                          "couplingInterval 5; air off; voidFraction { type middle; }", "cp")),
+                      Contains("unknown void-fraction model 'middle'"));
 }

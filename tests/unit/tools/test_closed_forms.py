@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Closed-form discharge estimates (tools/pylib/closed_forms.py) against hand values.
+"""Closed-form discharge estimates (tools/granair_cases/closed_forms.py) against hand values.
 
 Hand values (computed on paper, 4 significant figures):
 - MCC hopper (reference case B): D = 25 mm, d = 660 um, rho_b = 900, C = 0.58:
@@ -13,12 +13,9 @@ Hand values (computed on paper, 4 significant figures):
   dp/dz = -rho_b g stops the flow.
 """
 import math
-import os
-import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools", "pylib"))
-import closed_forms as cf   # noqa: E402
+from granair_cases import closed_forms as cf
 
 
 class ClosedForms(unittest.TestCase):
@@ -52,6 +49,17 @@ class ClosedForms(unittest.TestCase):
         self.assertTrue(0 < r < 1)
         # coarser particles feel less drag: the ratio tends to 1
         self.assertGreater(cf.carleton_ratio(B, th, 10 * d, rp, rf, mu), r)
+
+    def test_ergun_and_wen_yu(self):
+        # the first-step packed column (tests/case/first_step_force.py): eps = 1 - pi/6,
+        # d = 1 mm, U_s = 0.2 eps = 0.0953 m/s: 150 mu U (1-e)^2/(e^3 d^2) = 652.3,
+        # 1.75 rho U^2 (1-e)/(e^3 d) = 92.3 Pa/m
+        eps = 1 - math.pi / 6
+        self.assertAlmostEqual(cf.ergun_gradient(0.2 * eps, eps, 1e-3, 1.2, 1.8e-5), 744.6, delta=0.5)
+        # 0.5 mm glass beads in air (cases/fluidised-bed/README.md): Ar = 1.2 x 2498.8 x 9.81 x
+        # 1.25e-10 / 3.24e-10 = 11349, U_mf = 0.1885 m/s
+        self.assertAlmostEqual(cf.archimedes(0.5e-3, 2500, 1.2, 1.8e-5), 11349, delta=1)
+        self.assertAlmostEqual(cf.wen_yu_umf(0.5e-3, 2500, 1.2, 1.8e-5), 0.1885, delta=5e-5)
 
     def test_crewdson(self):
         self.assertAlmostEqual(cf.crewdson(1.0, -600.0 * 9.81 / 2, 600.0), 1 / math.sqrt(2), delta=1e-12)

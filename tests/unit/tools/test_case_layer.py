@@ -1,0 +1,204 @@
+#!/usr/bin/env python3
+"""The case layer (tools/granair_cases) against hand-made inputs: templates,
+OpenFOAM fields and entries, time series, the DEM blocks, checks, the runner.
+Fast (no simulation): label unit."""
+import math
+import os
+import random
+import tempfile
+import unittest
+
+import numpy as np
+
+import granair_cases as gc
+from granair_cases import CaseError
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as fh:
+        fh.write(text)
+
+
+def read(path):
+    with open(path) as fh:
+        return fh.read()
+
+
+class Template(unittest.TestCase):
+    def test_fill_formats_and_names_the_missing_key(self):
+        self.assertEqual(gc.template.fill("endTime @T:.10g@; air @AIR@;", {"T": 0.15, "AIR": "on"}),
+                         "endTime 0.15; air on;")
+        self.assertEqual(gc.template.fill("(-@W:.12g@ 0)", {"W": 0.0225}), "(-0.0225 0)")
+        with self.assertRaisesRegex(CaseError, r"controlDict: placeholder @T_END@ has no value"):
+            gc.template.fill("endTime @T_END@;", {"T": 1}, "controlDict")
+        # OpenFOAM macros, LIGGGHTS variables and e-mail-like text are not placeholders
+        text = "pFinal { $p; } print \"${vrms} $n\" a@b.c"
+        self.assertEqual(gc.template.fill(text, {}), text)
+
+    def test_render_copies_a_folder_or_part_of_it(self):
+        with tempfile.TemporaryDirectory() as d:
+            write(os.path.join(d, "t", "system", "controlDict"), "deltaT @DT:g@;\n")
+            write(os.path.join(d, "t", "dem", "in.fill"), "timestep @DT@\n")
+            out = gc.template.render(os.path.join(d, "t"), os.path.join(d, "run"), {"DT": 5e-4})
+            self.assertEqual(len(out), 2)
+            self.assertEqual(read(os.path.join(d, "run", "system", "controlDict")), "deltaT 0.0005;\n")
+            gc.template.render(os.path.join(d, "t"), os.path.join(d, "fill"), {"DT": 1}, only=["dem"])
+            self.assertEqual(os.listdir(os.path.join(d, "fill")), ["dem"])
+            with self.assertRaisesRegex(CaseError, "no nowhere"):
+                gc.template.render(os.path.join(d, "t"), os.path.join(d, "x"), {"DT": 1}, only=["nowhere"])
+
+
+class Foam(unittest.TestCase):
+    def test_fields_and_entries(self):
+        with tempfile.TemporaryDirectory() as d:
+            write(os.path.join(d, "s"), "internalField nonuniform List<scalar>\n3\n(\n0.5\n1\n-2e-3\n)\n;\n")
+            write(os.path.join(d, "v"), "internalField nonuniform List<vector> 2\n(\n(1 2 3)\n(4 5 -6)\n)\n;\n")
+            write(os.path.join(d, "u"), "internalField   uniform (0 0 1);\n")
+            write(os.path.join(d, "short"), "internalField   nonuniform List<vector> 2((0 0 1) (0 0 2));\n")
+            np.testing.assert_array_equal(gc.foam.read_field(os.path.join(d, "short"))[:, 2], [1, 2])
+            np.testing.assert_array_equal(gc.foam.read_field(os.path.join(d, "s")), [0.5, 1, -2e-3])
+            np.testing.assert_array_equal(gc.foam.read_field(os.path.join(d, "v"))[1], [4, 5, -6])
+            self.assertEqual(gc.foam.read_field(os.path.join(d, "u"), 4).shape, (4, 3))
+            with self.assertRaisesRegex(CaseError, "expected 5"):
+                gc.foam.read_field(os.path.join(d, "s"), 5)
+            write(os.path.join(d, "controlDict"), "stopAt          endTime;\nendTime 2;\n")
+            gc.foam.set_entry(os.path.join(d, "controlDict"), "stopAt", "writeNow")
+            self.assertIn("stopAt          writeNow;", read(os.path.join(d, "controlDict")))
+            with self.assertRaisesRegex(CaseError, "no entry 'deltaT'"):
+                gc.foam.set_entry(os.path.join(d, "controlDict"), "deltaT", 1)
+            for t in ("0", "0.25", "0.5"):
+                os.makedirs(os.path.join(d, "case", t))
+            os.makedirs(os.path.join(d, "case", "system"))
+            self.assertEqual([t for t, _ in gc.foam.time_dirs(os.path.join(d, "case"))], [0, 0.25, 0.5])
+
+
+    def test_plane_cells_and_their_picture(self):
+        # two cells side by side, x in [0, 2], z in [0, 1], y in [0, 0.1]; front y = 0, back y = 0.1
+        head = "FoamFile { version 2.0; format ascii; class %s; object %s; }\n"
+        pts = [(x, y, z) for y in (0, 0.1) for z in (0, 1) for x in (0, 1, 2)]   # 0-5 front, 6-11 back
+        faces = ["4(1 7 10 4)", "4(0 3 4 1)", "4(1 4 5 2)", "4(6 7 10 9)", "4(7 8 11 10)"]
+        owner = [0, 0, 1, 0, 1]                  # one internal face, then frontAndBack (4 faces)
+        with tempfile.TemporaryDirectory() as d:
+            m = os.path.join(d, "constant", "polyMesh")
+            write(os.path.join(m, "points"), head % ("vectorField", "points") + f"{len(pts)}\n(\n"
+                  + "\n".join("(%g %g %g)" % p for p in pts) + "\n)\n")
+            write(os.path.join(m, "faces"), head % ("faceList", "faces") + "5\n(\n" + "\n".join(faces) + "\n)\n")
+            write(os.path.join(m, "owner"), head % ("labelList", "owner") + "5\n(\n" + "\n".join(map(str, owner)) + "\n)\n")
+            write(os.path.join(m, "boundary"), head % ("polyBoundaryMesh", "boundary")
+                  + "1\n(\n    frontAndBack\n    {\n        type empty;\n        nFaces 4;\n        startFace 1;\n    }\n)\n")
+            cells = gc.foam.plane_cells(d)
+            self.assertEqual(len(cells), 2)
+            np.testing.assert_array_equal(sorted(map(tuple, cells[1])), [(1, 0), (1, 1), (2, 0), (2, 1)])
+            write(os.path.join(d, "0", "eps"), "internalField nonuniform List<scalar> 2(0.4 1);\n")
+            png = gc.plots.case_fields(os.path.join(d, "f.png"), "t", d, [0], [("eps", "eps", "viridis", (0, 1))],
+                                       (0, 2000), (0, 1000))
+            self.assertTrue(os.path.getsize(png) > 1000)
+            self.assertIsNone(gc.plots.case_fields(os.path.join(d, "g.png"), "t", d, [0],
+                                                   [("p", "p", "RdBu_r", None)], (0, 2000), (0, 1000)))
+
+
+class Series(unittest.TestCase):
+    def test_rates_and_windows(self):
+        t = np.arange(1, 101) * 0.01            # 1 s in 0.01 s steps
+        m = 0.2 * t                              # a steady 0.2 kg/s
+        self.assertAlmostEqual(gc.series.slope(t, m, 0.3), 0.2, places=12)
+        dt = gc.series.step_lengths(t)
+        centres, (flow,) = gc.series.window_means(t, dt, [np.full(100, 0.2)], 0.1)
+        self.assertEqual(len(centres), 10)
+        np.testing.assert_allclose(flow, 0.2, rtol=1e-12)
+        self.assertAlmostEqual(centres[0], 0.05, places=12)
+        # a last window of 0.05 s: kept when longer than keep_last x width
+        c2, _ = gc.series.window_means(t[:95], dt[:95], [m[:95]], 0.1, keep_last=0.4)
+        c3, _ = gc.series.window_means(t[:95], dt[:95], [m[:95]], 0.1, keep_last=0.6)
+        c4, _ = gc.series.window_means(t[:95], dt[:95], [m[:95]], 0.1, keep_last=None)
+        self.assertEqual((len(c2), len(c3), len(c4)), (10, 9, 9))
+        left = 100 - 50 * t                      # half of it gone at t = 1 s
+        self.assertEqual(gc.series.steady_window(t, left, 0.3), (0.3, 1.0))
+        self.assertAlmostEqual(gc.series.time_mean(t, t, 0.5, dt=dt), 0.75, places=12)
+
+    def test_csv_round_trip(self):
+        with tempfile.TemporaryDirectory() as d:
+            p = os.path.join(d, "s.csv")
+            gc.series.write_csv(p, [("t", [0.1, 0.2]), ("mass_flow_kg_s", [1 / 3, 2.0])])
+            s = gc.series.read_csv(p)
+            self.assertEqual(list(s), ["t", "mass_flow_kg_s"])
+            self.assertEqual(s["mass_flow_kg_s"][0], 0.33333333)
+            with self.assertRaisesRegex(CaseError, "has 2 rows, expected at least 3"):
+                gc.series.read_csv(p, min_rows=3)
+
+
+class Dem(unittest.TestCase):
+    def test_packing_keeps_its_gap_and_its_box(self):
+        L, gap = 0.01, 1e-5
+        d = [random.Random(2).uniform(1e-3, 2e-3) for _ in range(150)]
+
+        def sample(rng, r, top):
+            return rng.uniform(r, L - r), rng.uniform(0, L), rng.uniform(r, top)
+
+        atoms = gc.dem.loose_packing(sorted(d, reverse=True), random.Random(1), sample,
+                                     lambda x, y, z, r: True, lambda top: top * 1.05, 0.01,
+                                     2e-3 * 1.0001, gap, periodic_y=L)
+        self.assertEqual(len(atoms), 150)
+        a = np.array(atoms)
+        for i in range(len(a)):
+            dy = a[i, 1] - a[:, 1]
+            dy -= L * np.round(dy / L)
+            dist = np.sqrt((a[i, 0] - a[:, 0]) ** 2 + dy ** 2 + (a[i, 2] - a[:, 2]) ** 2)
+            need = (a[i, 3] + a[:, 3]) / 2 + gap
+            self.assertTrue(np.all((dist >= need * (1 - 1e-12)) | (np.arange(len(a)) == i)))
+
+    def test_rayleigh_time_steps_stl(self):
+        # glass bead of the fluidised bed, README: 3.1e-5 s
+        self.assertAlmostEqual(gc.dem.rayleigh_time(0.25e-3, 5e6, 0.3, 2500) * 1e5, 3.06, places=2)
+        self.assertEqual(gc.dem.time_steps(5e-4, 1e-4, 0.2), (25, 2e-5))
+        text = gc.dem.stl("w", [[(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]])
+        self.assertEqual(text.count("facet normal"), 2)
+        self.assertTrue(text.startswith("solid w\n") and text.endswith("endsolid w\n"))
+
+    def test_dump_and_balance(self):
+        with tempfile.TemporaryDirectory() as d:
+            write(os.path.join(d, "dump"), "ITEM: TIMESTEP\n0\nITEM: ATOMS id x z radius\n1 0.5 1 0.1\n2 -0.5 2 0.2\n")
+            dump = gc.dem.read_dump(os.path.join(d, "dump"))
+            np.testing.assert_array_equal(dump["z"], [1, 2])
+            write(os.path.join(d, "log"), "\nDEM discharge balance (whole run)\n"
+                  "    inserted                               5842   0.0111 kg\n"
+                  "    present                                4353   0.0083 kg\n"
+                  "    removed at the sink                    1489   0.0028 kg\n"
+                  "    lost (inserted - present - removed)       0   0 kg\n"
+                  "    discharged (crossed the outlet)        1500   0.0029 kg\n"
+                  "total wall time 114.2 s\n")
+            bal = gc.dem.discharge_balance(os.path.join(d, "log"))
+            self.assertEqual((bal["inserted"], bal["removed"], bal["closes"]), (5842, 1489, True))
+            self.assertEqual(bal["wall_time_s"], 114.2)
+            write(os.path.join(d, "bad"), "nothing\n")
+            with self.assertRaisesRegex(CaseError, "no DEM discharge balance"):
+                gc.dem.discharge_balance(os.path.join(d, "bad"))
+
+
+class ChecksAndRunner(unittest.TestCase):
+    def test_checks_state_tolerance_and_fail(self):
+        c = gc.checks.Checks("t")
+        self.assertTrue(c.close("w", 1.01, 1.0, 0.02, "why"))
+        self.assertFalse(c.close("w", 1.03, 1.0, 0.02))
+        self.assertFalse(c.near("nan", math.nan, 0, 1))
+        self.assertTrue(c.exact("n", 3, 3))
+        self.assertIn("tolerance 2 %", c.lines[0])
+        with self.assertRaises(SystemExit):
+            c.report(enforce=True)
+
+    def test_run_logs_and_reports_the_tail(self):
+        with tempfile.TemporaryDirectory() as d:
+            cpu = gc.runner.run(["sh", "-c", "echo hello"], d, "greet")
+            self.assertGreaterEqual(cpu, 0)
+            self.assertEqual(read(os.path.join(d, "log", "greet.log")), "hello\n")
+            with self.assertRaisesRegex(CaseError, r"(?s)exit 3.*last words"):
+                gc.runner.run(["sh", "-c", "echo last words; exit 3"], d, "bad")
+            with self.assertRaisesRegex(CaseError, "cannot start"):
+                gc.runner.run(["no-such-program-here"], d)
+            r = gc.runner.pool([("a", lambda x: {"cpu_s": x}, (1,)), ("b", lambda x: x, (2,))], 2, "test")
+            self.assertEqual(r, {"a": {"cpu_s": 1}, "b": 2})
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

@@ -1,0 +1,85 @@
+"""The one template mechanism of the case layer.
+
+A case's template/ folder holds ordinary OpenFOAM dictionaries and LIGGGHTS
+scripts in which the numbers that change from run to run are placeholders:
+
+    endTime         @T_END:.10g@;     // discharge time [s]
+    drag            { type @DRAG_LAW@; }
+
+`@KEY@` is replaced by str(value), `@KEY:spec@` by format(value, spec) (a
+Python format spec, so the template says how a number is printed). Keys are
+upper case. A placeholder with no value stops the render with the file and
+the key named; values no file uses are allowed (one dictionary of numbers can
+serve several templates).
+
+    render(src, dst, values)            copy a template folder, fill every file
+    render(src, dst, values, ["dem"])   only some of its files or folders
+    fill(text, values, where)           one text
+    constants(parameters)               the upper-case numbers of a case's parameters.py as values
+"""
+import os
+import re
+import shutil
+
+from . import CaseError
+
+PLACEHOLDER = re.compile(r"@([A-Z][A-Z0-9_]*)(?::([^@\s]*))?@")
+
+
+def constants(module):
+    """The case's numbers as template values: every upper-case number or string of
+    its parameters module (so a template names them as parameters.py does)."""
+    return {k: v for k, v in vars(module).items() if k.isupper() and isinstance(v, (int, float, str))}
+
+
+def fill(text, values, where="template"):
+    """text with every @KEY@ / @KEY:spec@ replaced; CaseError names `where` and the key."""
+    def one(m):
+        key, spec = m.group(1), m.group(2)
+        if key not in values:
+            raise CaseError(f"{where}: placeholder @{key}@ has no value "
+                            f"(given: {', '.join(sorted(values)) or 'none'})")
+        try:
+            return format(values[key], spec) if spec else str(values[key])
+        except (TypeError, ValueError) as e:
+            raise CaseError(f"{where}: placeholder @{key}:{spec}@ cannot format {values[key]!r} ({e})")
+    return PLACEHOLDER.sub(one, text)
+
+
+def render(src, dst, values, only=None):
+    """Copy the template folder src to dst (created; existing files overwritten)
+    with every text file filled from `values`. `only`: relative paths of the
+    files or folders to take (default all). Returns the written paths."""
+    if not os.path.isdir(src):
+        raise CaseError(f"template folder {src} not found")
+    written = []
+    for root, _, files in os.walk(src):
+        for name in sorted(files):
+            path = os.path.join(root, name)
+            rel = os.path.relpath(path, src)
+            if only is not None and not any(rel == o or rel.startswith(o.rstrip("/") + "/") for o in only):
+                continue
+            out = os.path.join(dst, rel)
+            os.makedirs(os.path.dirname(out), exist_ok=True)
+            try:
+                with open(path) as fh:
+                    text = fh.read()
+            except UnicodeDecodeError:
+                shutil.copyfile(path, out)
+            else:
+                with open(out, "w") as fh:
+                    fh.write(fill(text, values, path))
+            written.append(out)
+    if only is not None:
+        missing = [o for o in only if not os.path.exists(os.path.join(src, o))]
+        if missing:
+            raise CaseError(f"template {src}: no {', '.join(missing)}")
+    return written
+
+
+def write(path, text):
+    """Write text to path, creating its folder (generated data: packings, STL walls)."""
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w") as fh:
+        fh.write(text)
+    return path
