@@ -229,7 +229,9 @@ void GranularMixture::correctViscosity
     forAll(eta, celli)
     {
         const scalar a = min(max(alpha[celli], scalar(0)), scalar(1));
-        mu[celli] = a*eta[celli] + (1 - a)*muAir_;
+        // Never below the air's: a rheology may return 0 (latzSchmidt where
+        // c = 0), and the harmonic face viscosity divides by mu.
+        mu[celli] = a*max(eta[celli], muAir_) + (1 - a)*muAir_;
     }
 
     for (volScalarField* f : {&eta_, &mu_, &I_, &gammaDot_, &phiSolid_})

@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 #include "PowderBalance.H"
 
+#include <cmath>
+
 #include "AirPercolation.H"
 #include "core/Error.hpp"
 #include "uniformDimensionedFields.H"
@@ -34,23 +36,43 @@ scalar revolutionScale(const fvMesh& mesh)
     return 1;
 }
 
-// Cells whose face touches the outlet patch and their face neighbours: the
-// outlet itself holds p = 0, so its first layers are stress-free by the
-// boundary condition, not by the numerics (the neighbours across processor
-// boundaries are not marked: a decomposed run counts a few more cells).
-boolList outletLayers(const fvMesh& mesh, label patchi)
+// The cells where the powder is stress-free by the boundary conditions, not
+// by the numerics, which the tension_fraction leaves out: the first two cell
+// layers at the outlet patch (p = 0 there) and, when the mesh continues below
+// the orifice (orificeHeight given), everything below the orifice plane (the
+// falling jet) and two layers above it. Layers grow by face neighbours; those
+// across processor boundaries are not marked (a decomposed run counts a few
+// more cells).
+boolList stressFreeByConstruction
+(
+    const fvMesh& mesh,
+    label patchi,
+    scalar orificeHeight,
+    const vector& up
+)
 {
     boolList mark(mesh.nCells(), false);
-    const labelUList& first = mesh.boundary()[patchi].faceCells();
-    for (const label c : first)
+    for (const label c : mesh.boundary()[patchi].faceCells())
     {
         mark[c] = true;
     }
-    for (const label c : first)
+    if (orificeHeight < VGREAT)
     {
-        for (const label n : mesh.cellCells()[c])
+        forAll(mark, c)
         {
-            mark[n] = true;
+            if ((mesh.C()[c] & up) < orificeHeight) mark[c] = true;
+        }
+    }
+    for (int layer = 1; layer < 2 + (orificeHeight < VGREAT ? 1 : 0); ++layer)
+    {
+        const boolList previous(mark);
+        forAll(previous, c)
+        {
+            if (!previous[c]) continue;
+            for (const label n : mesh.cellCells()[c])
+            {
+                mark[n] = true;
+            }
         }
     }
     return mark;
@@ -65,7 +87,8 @@ PowderBalance::PowderBalance
     scalar rhoPowder,
     const volScalarField& alpha,
     bool withAir,
-    const fileName& directory
+    const fileName& directory,
+    scalar orificeHeight
 )
 :
     mesh_(mesh),
@@ -74,6 +97,7 @@ PowderBalance::PowderBalance
     scale_(revolutionScale(mesh)),
     up_(0, 0, 1),
     air_(withAir),
+    orificeHeight_(orificeHeight),
     initialMass_(0),
     discharged_(0),
     lastFlow_(0),
@@ -90,9 +114,9 @@ PowderBalance::PowderBalance
             "constant/granularProperties, key 'outletPatch': no boundary patch named '", outletPatch, "'"
         );
     }
-    nearOutlet_ = outletLayers(mesh, outletPatch_);
     const uniformDimensionedVectorField& g = meshObjects::gravity::New(mesh.time());
     if (mag(g.value()) > SMALL) up_ = -g.value()/mag(g.value());
+    nearOutlet_ = stressFreeByConstruction(mesh, outletPatch_, orificeHeight_, up_);
     initialMass_ = powderMass(alpha);
 
     std::vector<::granair::Column> columns{
@@ -154,7 +178,10 @@ void PowderBalance::record
     std::vector<double> row{mesh_.time().value(), lastFlow_, discharged_, mass, (mass + discharged_ - initialMass_)/initialMass_};
     if (air_)
     {
-        row.push_back(air.patchGradient(outletPatch_, up_));
+        // On the orifice plane where the mesh has faces there (the wedge
+        // silo); else (the MCC cap is curved) on the outlet patch.
+        const scalar onPlane = orificeHeight_ < VGREAT ? air.planeGradient(orificeHeight_, up_) : VGREAT;
+        row.push_back(std::isfinite(onPlane) && onPlane < VGREAT ? onPlane : air.patchGradient(outletPatch_, up_));
         row.push_back(gMin(air.pAir().primitiveField()));
     }
 

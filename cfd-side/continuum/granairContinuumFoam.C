@@ -27,7 +27,8 @@ Description
 Files
     constant/granularProperties (GranularMixture.H, AirPercolation.H, and
         outletPatch <name>;  the patch the discharge goes through, default outlet;
-        acceleration (ax ay az);  optional uniform acceleration besides g [m/s2]),
+        acceleration (ax ay az);  optional uniform acceleration besides g [m/s2];
+        orificeHeight h;     optional: outlet dp/dz measured on the plane z = h, PowderBalance.H),
     constant/g, optional constant/hRef,
     0/U, 0/p_rgh, 0/alpha.powder, 0/p_air (darcyErgun), 0/T (latzSchmidt),
     system/fvSolution: solvers { alpha.powder p_rgh p_rghFinal U p_air T },
@@ -220,7 +221,8 @@ int main(int argc, char* argv[])
             mixture.rhoPowder(),
             alpha,
             air.enabled(),
-            runTime.globalPath()/"postProcessing"
+            runTime.globalPath()/"postProcessing",
+            properties.getDouble("orificeHeight", VGREAT)
         );
 
         Info<< "granairContinuumFoam: rheology " << mixture.rheology().name().c_str()
