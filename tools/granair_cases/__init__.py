@@ -8,6 +8,7 @@
     series      time series: CSV in and out, window means, steady rates
     powder      the discharge of a silo or hopper: DEM and continuum runs to the level contract
     closed_forms  Beverloo, Hagen-Beverloo, Crewdson, Carleton
+    gci         Roache's grid convergence index of a result on three meshes
     levels      level.json, the contract of `./granair compare` (docs/fidelity-levels.md)
     checks      a case's --check: named assertions with tolerances and reasons
     plots       matplotlib (Agg) helpers: figures, Beverloo bands, field panels
@@ -23,4 +24,4 @@ class CaseError(Exception):
     file, the key or the command and what was expected."""
 
 
-from . import foam, template, runner, dem, series, powder, closed_forms, levels, checks, plots, cli  # noqa: E402,F401
+from . import foam, template, runner, dem, series, powder, closed_forms, gci, levels, checks, plots, cli  # noqa: E402,F401
