@@ -20,6 +20,7 @@ NU = 0.3                 # Poisson ratio
 RESTITUTION = 0.67
 FRICTION_PP = 0.95       # particle-particle sliding friction
 WALL_FRICTION_ANGLE = 16.0   # aluminium wall friction angle [deg]
+WALL_FRICTION = math.tan(math.radians(WALL_FRICTION_ANGLE))   # mu_w of the continuum's Coulomb walls
 K_COH_REAL = 1.0e5       # SJKR cohesion energy density at E_REAL [J/m3]
 AIR_RHO, AIR_MU = 1.2, 1.8e-5
 G = 9.81
@@ -109,5 +110,5 @@ def fit_mu_s():
 # Checks (study.py, continuum.py --check; README "Expected results", "Continuum fidelity")
 AIR_CONTINUITY = 1e-6    # air in - out vs pore-volume growth of the silo, relative (measured 2.5e-9)
 PORE_VS_POWDER = 0.10    # pore-volume growth vs powder volume discharged, relative (measured -2.5 %, test run)
-CONTINUUM_W_OVER_DEM = (1.5, 4.0)
+CONTINUUM_W_OVER_DEM = (1.2, 2.2)   # committed runs 1.40-1.87 (Coulomb walls, free fall; README)
 CONTINUUM_DPDZ_OVER_DEM = (0.5, 1.6)
