@@ -79,10 +79,6 @@ def geometry(n_diameter, rho_b, freefall):
                 FILL_G=P.FILL_MASS * 1e3, FILL_Z=fill_z, RHO_B=rho_b)
 
 
-WALL_U = dict(coulomb="type coulombWallSlip; frictionCoefficient {mu_w:g}; value uniform (0 0 0);",
-              slip="type slip;", noSlip="type noSlip;")
-
-
 def walls_text(a):
     return f"Coulomb (mu_w {a.wall_friction:g})" if a.walls == "coulomb" else a.walls
 
@@ -93,7 +89,7 @@ def write_run(a, n, run):
     with open(block) as fh:
         rheology = gc.template.fill(fh.read(), dict(ETA_MAX=a.eta_max), block)
     values = dict(geometry(n, P.LATZ["rho_bulk"] if latz else P.RHO_BULK, a.freefall), END=a.end, NP=a.np,
-                  WRITE_FORMAT="ascii" if latz else "binary", WALL_U=WALL_U[a.walls].format(mu_w=a.wall_friction),
+                  WRITE_FORMAT="ascii" if latz else "binary", WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction),
                   MAX_CO=a.max_co, TRANSPOSE=a.transpose_stress,
                   AIR_MODEL="darcyErgun" if a.air else "none", DIAMETER=P.LATZ["d"] if latz else "660e-6",
                   RHEOLOGY=rheology)
@@ -252,7 +248,7 @@ def main():
     ap.add_argument("--end", type=float, default=None, help="simulated time [s] (default 2; --quick 1)")
     ap.add_argument("--steady-from", type=float, default=0.5, help="start of the steady window [s]")
     ap.add_argument("--air", action="store_true", help="Darcy-Ergun air drag instead of the dry model")
-    ap.add_argument("--walls", choices=sorted(WALL_U), default="coulomb",
+    ap.add_argument("--walls", choices=gc.foam.WALLS, default="coulomb",
                     help="coulomb (Coulomb wall friction, default), slip (free slip) or noSlip")
     ap.add_argument("--wall-friction", type=float, default=P.WALL_FRICTION,
                     help=f"wall friction coefficient of --walls coulomb (default {P.WALL_FRICTION:g})")

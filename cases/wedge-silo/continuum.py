@@ -51,10 +51,6 @@ def latz():
     return {k: float(m.group(1)) for k, m in out.items()}, text
 
 
-WALL_U = dict(coulomb="type coulombWallSlip; frictionCoefficient {mu_w:.6g}; value uniform (0 0 0);",
-              slip="type slip;", noSlip="type noSlip;")
-
-
 def walls_text(v):
     return {"coulomb": f"Coulomb (mu_w {v['WALL_FRICTION']:.3f})", "slip": "free-slip",
             "noSlip": "no-slip"}[v["WALLS"]]
@@ -76,7 +72,7 @@ def numbers(a, b_mm, air):
              FILL_G=rho_b * P.fill_area(b, fill) * P.DEPTH * 1e3, AIR_MODEL="darcyErgun" if air else "none",
              MU_S=mu_s, COHESION_PA=c_kpa * 1e3, MU_2=mu_s + P.JOP_MU_SPAN, PHI_MAX=rho_b / P.RHO_P,
              PHI_MIN=rho_b / P.RHO_P - P.DILATANCY_SPAN, END=a.end, AIR=air, WALLS=a.walls,
-             WALL_U=WALL_U[a.walls].format(mu_w=a.wall_friction), WALL_FRICTION=a.wall_friction,
+             WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction), WALL_FRICTION=a.wall_friction,
              FREEFALL=freefall, FREEFALL_MM=freefall * 1e3, NZ_FALL=max(2, round(freefall / (b / a.mesh))),
              RHEOLOGY_NAME=a.rheology)
     if a.rheology == "latzSchmidt":
@@ -187,7 +183,7 @@ def main():
     ap.add_argument("--quick", action="store_true", help="N = 8, 0.3 s, and unless given --b 10 --air on (the case test)")
     ap.add_argument("--end", type=float, default=2.0, help="longest simulated time [s] (default 2)")
     ap.add_argument("--mesh", type=int, default=12, help="cells across the slot (default 12)")
-    ap.add_argument("--walls", choices=sorted(WALL_U), default="coulomb",
+    ap.add_argument("--walls", choices=gc.foam.WALLS, default="coulomb",
                     help="coulomb (Coulomb wall friction, default), slip (free slip) or noSlip")
     ap.add_argument("--wall-friction", type=float, default=P.WALL_FRICTION,
                     help=f"mu_w of --walls coulomb (default tan {P.WALL_FRICTION_ANGLE:g} deg = {P.WALL_FRICTION:.3f})")

@@ -116,3 +116,18 @@ def checkmesh(log):
     if not cells:
         raise CaseError(f"{log}: no cell count (did checkMesh run?)")
     return int(cells.group(1)), float(nonorth.group(1)) if nonorth else float("nan")
+
+
+# The wall conditions of granairContinuumFoam's velocity (docs/continuum-model.md):
+# Coulomb wall friction (coulombWallSlip, CoulombWallSlipFvPatchVectorField.H), free slip, no-slip.
+WALLS = ("coulomb", "slip", "noSlip")
+
+
+def wall_velocity(walls, mu_w):
+    """The 0/U entry of a wall patch for `walls` (one of WALLS), mu_w the wall
+    friction coefficient of coulomb."""
+    if walls == "coulomb":
+        return f"type coulombWallSlip; frictionCoefficient {mu_w:.6g}; value uniform (0 0 0);"
+    if walls in WALLS:
+        return f"type {walls};"
+    raise CaseError(f"walls {walls!r}: expected one of {', '.join(WALLS)}")
