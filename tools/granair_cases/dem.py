@@ -30,34 +30,40 @@ def time_steps(cfd_dt, t_rayleigh, fraction):
 
 
 def loose_packing(diameters, rng, sample, inside, grow, top, cell, gap, origin=(0.0, 0.0, 0.0),
-                  periodic_y=None, attempts=2000, square=lambda v: v * v):
+                  periodic_y=None, attempts=2000, square=lambda v: v * v, periodic_x=None):
     """Random sequential addition: each sphere (in the order given) is tried at
     positions sample(rng, r, top) -> (x, y, z) until inside(x, y, z, r) holds and it
     keeps `gap` from every sphere placed; after `attempts` misses the region grows
     (top = grow(top)). Neighbours are found on a grid of `cell` (>= the largest
-    diameter) from `origin`; periodic_y = L wraps y in [0, L). `square` squares
+    diameter) from `origin`; periodic_y = L wraps y in [0, L) (periodic_x = L
+    x in [0, L): the shear cell of cases/rheology-calibration). `square` squares
     the contact distance (x * x; `x ** 2` differs from it in the last bit for
     about 0.1 % of x, and a packing is only reproduced bit for bit by the same
     one). Returns [(x, y, z, d)]."""
     grid, atoms = {}, []
     ny = max(1, int(periodic_y / cell)) if periodic_y else None
+    nx = max(1, int(periodic_x / cell)) if periodic_x else None
 
     def key(x, y, z):
         iy = int(y / cell) % ny if ny else math.floor((y - origin[1]) / cell)
-        return math.floor((x - origin[0]) / cell), iy, math.floor((z - origin[2]) / cell)
+        ix = int(x / cell) % nx if nx else math.floor((x - origin[0]) / cell)
+        return ix, iy, math.floor((z - origin[2]) / cell)
 
     def free(x, y, z, r):
         ix, iy, iz = key(x, y, z)
         for dx in (-1, 0, 1):
+            jx = (ix + dx) % nx if nx else ix + dx
             for dz in (-1, 0, 1):
                 for dy in (-1, 0, 1):
                     jy = (iy + dy) % ny if ny else iy + dy
-                    for (px, py, pz, pr) in grid.get((ix + dx, jy, iz + dz), ()):
-                        ddy = y - py
+                    for (px, py, pz, pr) in grid.get((jx, jy, iz + dz), ()):
+                        ddy, ddx = y - py, x - px
                         if ny:
                             ddy -= periodic_y * round(ddy / periodic_y)
+                        if nx:
+                            ddx -= periodic_x * round(ddx / periodic_x)
                         rr = r + pr + gap
-                        if (x - px) ** 2 + ddy ** 2 + (z - pz) ** 2 < square(rr):
+                        if ddx ** 2 + ddy ** 2 + (z - pz) ** 2 < square(rr):
                             return False
         return True
 
@@ -77,13 +83,19 @@ def loose_packing(diameters, rng, sample, inside, grow, top, cell, gap, origin=(
     return atoms
 
 
-def write_data(path, atoms, box, rho, title):
+def write_data(path, atoms, box, rho, title, types=None):
     """LIGGGHTS read_data file (atom_style granular: id type diameter density x y z)
-    of atoms [(x, y, z, d)] in box (xlo, xhi, ylo, yhi, zlo, zhi); type 2 is left for walls."""
+    of atoms [(x, y, z, d)] in box (xlo, xhi, ylo, yhi, zlo, zhi), all of type 1
+    (type 2 is left for walls), or of the per-atom `types` (1 or 2: walls made of
+    particles, cases/rheology-calibration)."""
+    types = types or [1] * len(atoms)
+    if len(types) != len(atoms) or not set(types) <= {1, 2}:
+        raise CaseError(f"{path}: {len(types)} atom types for {len(atoms)} atoms, each 1 or 2 expected")
     lines = [f"# {title}", "", f"{len(atoms)} atoms", "2 atom types",
              f"{box[0]:.12g} {box[1]:.12g} xlo xhi", f"{box[2]:.12g} {box[3]:.12g} ylo yhi",
              f"{box[4]:.12g} {box[5]:.12g} zlo zhi", "", "Atoms", ""]
-    lines += [f"{i} 1 {d:.9g} {rho} {x:.9g} {y:.9g} {z:.9g}" for i, (x, y, z, d) in enumerate(atoms, 1)]
+    lines += [f"{i} {t} {d:.9g} {rho} {x:.9g} {y:.9g} {z:.9g}"
+              for i, ((x, y, z, d), t) in enumerate(zip(atoms, types), 1)]
     with open(path, "w") as fh:
         fh.write("\n".join(lines) + "\n")
 

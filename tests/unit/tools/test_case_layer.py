@@ -148,6 +148,32 @@ class Dem(unittest.TestCase):
             need = (a[i, 3] + a[:, 3]) / 2 + gap
             self.assertTrue(np.all((dist >= need * (1 - 1e-12)) | (np.arange(len(a)) == i)))
 
+    def test_packing_periodic_in_x_and_y_and_typed_data(self):
+        # the shear cell of cases/rheology-calibration: minimum images in x and y
+        L, gap = 0.008, 1e-5
+        d = [1.5e-3] * 60
+
+        def sample(rng, r, top):
+            return rng.uniform(0, L), rng.uniform(0, L), rng.uniform(r, top)
+
+        atoms = gc.dem.loose_packing(d, random.Random(3), sample, lambda x, y, z, r: True, lambda top: top * 1.05,
+                                     0.01, 1.5e-3 * 1.0001, gap, periodic_y=L, periodic_x=L)
+        a = np.array(atoms)
+        for i in range(len(a)):
+            dx, dy = a[i, 0] - a[:, 0], a[i, 1] - a[:, 1]
+            dx -= L * np.round(dx / L)
+            dy -= L * np.round(dy / L)
+            dist = np.sqrt(dx ** 2 + dy ** 2 + (a[i, 2] - a[:, 2]) ** 2)
+            self.assertTrue(np.all((dist >= (1.5e-3 + gap) * (1 - 1e-12)) | (np.arange(len(a)) == i)))
+        with tempfile.TemporaryDirectory() as tmp:
+            p = os.path.join(tmp, "p.data")
+            gc.dem.write_data(p, atoms[:3], (0, L, 0, L, 0, 0.02), 1500, "t", types=[2, 1, 2])
+            with open(p) as fh:
+                rows = [ln.split() for ln in fh.read().split("Atoms")[1].splitlines() if ln.strip()]
+            self.assertEqual([r[1] for r in rows], ["2", "1", "2"])
+            with self.assertRaisesRegex(CaseError, "2 atom types for 3 atoms"):
+                gc.dem.write_data(p, atoms[:3], (0, L, 0, L, 0, 0.02), 1500, "t", types=[1, 1])
+
     def test_rayleigh_time_steps_stl(self):
         # glass bead of the fluidised bed, README: 3.1e-5 s
         self.assertAlmostEqual(gc.dem.rayleigh_time(0.25e-3, 5e6, 0.3, 2500) * 1e5, 3.06, places=2)
