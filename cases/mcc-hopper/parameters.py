@@ -22,6 +22,9 @@ WINDOW = 0.01                     # s, averaging window of mass_flow.csv
 TOLERANCE = 0.005                 # mass balance and fill, relative
 FREEFALL = 0.0125                 # free-fall region below the orifice [m] (half the diameter)
 WALL_FRICTION = 0.3               # Coulomb wall friction: the DEM's particle-wall friction (assumed)
+# --rheology-from calibration: the material of calibration.json (cases/rheology-calibration)
+# whose mu(I), phi_max and parcel d replace the literature block's: the CG-DEM's s = 5 parcels
+CALIBRATION = "mcc-hopper"
 ETA_MAX = "1e5"                   # viscosity cap of mu(I) [Pa s] (README: W does not depend on it)
 MAX_CO = 0.4                      # maxCo and maxAlphaCo
 # Steady mass flow over Beverloo (k = 1) that the runs gave (README: 0.95-1.11

@@ -4,7 +4,7 @@
     study.py [--out DIR] [--quick] [--check] [--mesh N] [--end T] [--steady-from T] [--np N]
              [--air] [--walls coulomb|slip|noSlip] [--wall-friction MU] [--eta-max V]
              [--max-co C] [--transpose-stress on|off] [--freefall L] [--convergence] [--resume]
-             [--rheology muI|latzSchmidt]
+             [--rheology muI|latzSchmidt] [--rheology-from literature|calibration]
 
 One run from template/: the axisymmetric wedge mesh at resolution N (cells
 across the orifice diameter) with the free-fall region below the orifice, the
@@ -15,6 +15,14 @@ outlet_dpdz_Pa_m]: 10 ms window means of the outlet flow; the per-step flux
 carries a step-to-step oscillation), mass_flow.png, summary.txt (with the
 fraction of packed cells with p <= 0 and the outer-corrector statistics),
 level.json (muI only: a level of `./granair compare`).
+
+--rheology-from calibration: the mu(I) of the coarse-grained DEM's material
+(MCC parcels, s = 5, d = 3.3 mm), fitted from a DEM shear cell in
+cases/rheology-calibration (gc.calibration), in place of Remmelgas et al.'s
+fit of the real spheres (the default, `literature`: the material
+prediction); bulk density rho_p phi_max, Beverloo band with the parcel d.
+The run to compare with reference-cg-dem/ (README, "Cross-validation"); no
+level.json (the compare tool's continuum level is the material prediction).
 
 --convergence: first the mesh study (convergence.py, README "Mesh
 convergence"): one run per N of parameters.MESHES into OUT/convergence/N<n>
@@ -83,15 +91,30 @@ def walls_text(a):
     return f"Coulomb (mu_w {a.wall_friction:g})" if a.walls == "coulomb" else a.walls
 
 
+def material(a):
+    """(bulk density [kg/m3], particle diameter [m]) of the run's powder: the latzSchmidt
+    closure's, the DEM calibration's (rho_p phi_max, the parcel d) or the real spheres'."""
+    if a.rheology == "latzSchmidt":
+        return P.LATZ["rho_bulk"], P.LATZ["d"]
+    if a.rheology_from == "calibration":
+        f = gc.calibration.fit(P.CALIBRATION)
+        return f["rho_p"] * f["phi_max"], f["d"]
+    return P.RHO_BULK, P.D_PARTICLE
+
+
 def write_run(a, n, run):
     latz = a.rheology == "latzSchmidt"
     block = os.path.join(HERE, P.LATZ["block"] if latz else "rheology/muI")
     with open(block) as fh:
         rheology = gc.template.fill(fh.read(), dict(ETA_MAX=a.eta_max), block)
-    values = dict(geometry(n, P.LATZ["rho_bulk"] if latz else P.RHO_BULK, a.freefall), END=a.end, NP=a.np,
-                  WRITE_FORMAT="ascii" if latz else "binary", WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction),
+    if a.rheology_from == "calibration":
+        rheology = gc.calibration.block(rheology, P.CALIBRATION, where=block)
+    rho_b, d = material(a)
+    values = dict(geometry(n, rho_b, a.freefall), END=a.end, NP=a.np,
+                  WRITE_FORMAT="ascii" if latz or a.ascii else "binary",
+                  WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction),
                   MAX_CO=a.max_co, TRANSPOSE=a.transpose_stress,
-                  AIR_MODEL="darcyErgun" if a.air else "none", DIAMETER=P.LATZ["d"] if latz else "660e-6",
+                  AIR_MODEL="darcyErgun" if a.air else "none", DIAMETER=f"{d:.6g}",
                   RHEOLOGY=rheology)
     gc.template.render(os.path.join(HERE, "template"), run, values)
     if latz:
@@ -99,7 +122,7 @@ def write_run(a, n, run):
 
 
 SETTINGS = ("mesh", "end", "steady_from", "air", "walls", "wall_friction", "eta_max", "max_co", "transpose_stress",
-            "freefall", "rheology")
+            "freefall", "rheology", "rheology_from")
 
 
 def settings(a, n):
@@ -172,12 +195,14 @@ def numerics(run, t0):
 
 def post(a, run, res, n, wall, cpu, c, level=True):
     latz = a.rheology == "latzSchmidt"
-    rho_b, d = (P.LATZ["rho_bulk"], P.LATZ["d"]) if latz else (P.RHO_BULK, P.D_PARTICLE)
+    rho_b, d = material(a)
     r = gc.powder.continuum(run)
     t = r["t"]
-    model = f"{P.LATZ['model'] if latz else 'mu(I)'}, N = {n}, {walls_text(a)} walls"
+    calibrated = a.rheology_from == "calibration"
+    model = (f"{P.LATZ['model'] if latz else 'DEM-calibrated mu(I)' if calibrated else 'mu(I)'}, N = {n}, "
+             f"{walls_text(a)} walls")
     o = gc.powder.continuum_outputs(r, res, a.steady_from, None, P.WINDOW, 0.0, "mass_flow.csv",
-                                    None if latz or not level else dict(
+                                    None if latz or calibrated or not level else dict(
         case="mcc-hopper", model=model, b_mm=P.D_OUTLET * 1e3, wall_time_s=float(wall), cores=a.np))
     w, in_window = o["w"], o["flow"][o["centres"] >= a.steady_from]
     w_sd = float(np.sqrt(np.sum((in_window - w) ** 2) / max(1, len(in_window))))
@@ -200,7 +225,8 @@ def post(a, run, res, n, wall, cpu, c, level=True):
           f"Beverloo {bev[0]:.4g}-{bev[1]:.4g} kg/s (k = 3..1); mass balance error {r['balance']:.2e} "
           f"(solver max {r['solver_balance']:.1e}); initial {r['initial']:.6g} kg")
     plot(o["centres"], o["flow"], w, bev, a, t[-1], f"granairContinuumFoam, N = {n}, {walls_text(a)} walls",
-         P.LATZ["material"] if latz else "MCC hopper (Remmelgas et al. 2019)", os.path.join(res, "mass_flow.png"))
+         P.LATZ["material"] if latz else ("MCC parcels (s = 5), mu(I) calibrated from DEM" if calibrated else
+                                          "MCC hopper (Remmelgas et al. 2019)"), os.path.join(res, "mass_flow.png"))
     gc.powder.check_continuum(c, f"N = {n}", r, P.TOLERANCE, "0.5 %: ~2e-4 of the powder leaves through the open "
                               "side of the free-fall region, which the outlet integral counts as error (README)")
     c.near(f"N = {n}: initial powder / 1000 g fill - 1", fill_error, 0.0, P.TOLERANCE, "setAlphaField of the fill plane")
@@ -263,6 +289,10 @@ def main():
     ap.add_argument("--resume", action="store_true",
                     help="a finished run of the same settings (OUT/settings.json) is not run again")
     ap.add_argument("--rheology", choices=["muI", "latzSchmidt"], default="muI")
+    ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
+                    help="muI parameters: Remmelgas et al.'s fit of the real spheres (default) or the DEM "
+                         "calibration of the coarse-grained DEM's parcels (cases/rheology-calibration)")
+    ap.add_argument("--ascii", action="store_true", help="write the fields as ASCII (for the field profiles)")
     a = gc.cli.parse(ap, os.path.join(HERE, "results"))
     if a.quick:
         a.mesh = 14
@@ -273,6 +303,8 @@ def main():
         ap.error(f"--freefall {a.freefall:g}: expected a length > 0 [m]")
     if not a.wall_friction > 0:
         ap.error(f"--wall-friction {a.wall_friction:g}: expected a coefficient > 0")
+    if a.rheology_from == "calibration" and a.rheology != "muI":
+        ap.error("--rheology-from calibration: the calibration is a muI block (--rheology muI)")
     if not a.max_co > 0:
         ap.error(f"--max-co {a.max_co:g}: expected a Courant number > 0")
     checks = gc.checks.Checks("mcc-hopper")

@@ -111,4 +111,8 @@ def fit_mu_s():
 AIR_CONTINUITY = 1e-6    # air in - out vs pore-volume growth of the silo, relative (measured 2.5e-9)
 PORE_VS_POWDER = 0.10    # pore-volume growth vs powder volume discharged, relative (measured -2.5 %, test run)
 CONTINUUM_W_OVER_DEM = (1.2, 2.2)   # committed runs 1.40-1.87 (Coulomb walls, free fall; README)
+# --rheology-from calibration (continuum.py): the material of calibration.json
+# (cases/rheology-calibration, the study-size parcels) and issue 16's target against the DEM
+CALIBRATION = "wedge-silo"
+CALIBRATED_W_OVER_DEM = (0.85, 1.15)
 CONTINUUM_DPDZ_OVER_DEM = (0.5, 1.6)

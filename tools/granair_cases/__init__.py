@@ -13,6 +13,7 @@
     checks      a case's --check: named assertions with tolerances and reasons
     plots       matplotlib (Agg) helpers: figures, Beverloo bands, field panels
     cli         the options every study takes (--out, --check, --np, --setup-only)
+    calibration the DEM-calibrated mu(I) of a case material in place of a literature block
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -24,4 +25,4 @@ class CaseError(Exception):
     file, the key or the command and what was expected."""
 
 
-from . import foam, template, runner, dem, series, powder, closed_forms, gci, levels, checks, plots, cli  # noqa: E402,F401
+from . import foam, template, runner, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration  # noqa: E402,F401,E501

@@ -131,3 +131,24 @@ def wall_velocity(walls, mu_w):
     if walls in WALLS:
         return f"type {walls};"
     raise CaseError(f"walls {walls!r}: expected one of {', '.join(WALLS)}")
+
+
+def line_profile(case, t, names, points, patch="frontAndBack"):
+    """Fields of a plane or wedge mesh (one cell thick; `patch` its empty or wedge side)
+    at time t, interpolated linearly between cell centres (the mean of each cell's
+    vertices on `patch`) to points [(x, z), ...]: {name: values} (a vector field gives
+    its x and z components as name_x, name_z). NaN outside the mesh's centres."""
+    from matplotlib.tri import LinearTriInterpolator, Triangulation
+    d = time_dir(case, t)
+    if d is None:
+        raise CaseError(f"{case}: no time folder {t:g} (written: {[tt for tt, _ in time_dirs(case)]})")
+    centres = np.array([poly.mean(axis=0) for poly in plane_cells(case, patch)])
+    tri = Triangulation(centres[:, 0], centres[:, 1])
+    pts = np.asarray(points, dtype=float)
+    out = {}
+    for name in names:
+        f = read_field(os.path.join(d, name), len(centres))
+        comps = {name: f} if f.ndim == 1 else {name + "_x": f[:, 0], name + "_z": f[:, 2]}
+        for key, v in comps.items():
+            out[key] = np.ma.filled(LinearTriInterpolator(tri, v)(pts[:, 0], pts[:, 1]).astype(float), np.nan)
+    return out
