@@ -4,7 +4,7 @@
     study.py [--out DIR] [--quick] [--check] [--mesh N] [--end T] [--steady-from T] [--np N]
              [--air] [--walls coulomb|slip|noSlip] [--wall-friction MU] [--eta-max V]
              [--max-co C] [--transpose-stress on|off] [--freefall L] [--convergence] [--resume]
-             [--rheology muI|latzSchmidt] [--rheology-from literature|calibration]
+             [--rheology muI|latzSchmidt] [--rheology-from literature|calibration] [--rheology-d D]
 
 One run from template/: the axisymmetric wedge mesh at resolution N (cells
 across the orifice diameter) with the free-fall region below the orifice, the
@@ -98,7 +98,7 @@ def material(a):
         return P.LATZ["rho_bulk"], P.LATZ["d"]
     if a.rheology_from == "calibration":
         f = gc.calibration.fit(P.CALIBRATION)
-        return f["rho_p"] * f["phi_max"], f["d"]
+        return f["rho_p"] * f["phi_max"], a.rheology_d or f["d"]
     return P.RHO_BULK, P.D_PARTICLE
 
 
@@ -108,7 +108,7 @@ def write_run(a, n, run):
     with open(block) as fh:
         rheology = gc.template.fill(fh.read(), dict(ETA_MAX=a.eta_max), block)
     if a.rheology_from == "calibration":
-        rheology = gc.calibration.block(rheology, P.CALIBRATION, where=block)
+        rheology = gc.calibration.block(rheology, P.CALIBRATION, d=a.rheology_d, where=block)
     rho_b, d = material(a)
     values = dict(geometry(n, rho_b, a.freefall), END=a.end, NP=a.np,
                   WRITE_FORMAT="ascii" if latz or a.ascii else "binary",
@@ -122,12 +122,15 @@ def write_run(a, n, run):
 
 
 SETTINGS = ("mesh", "end", "steady_from", "air", "walls", "wall_friction", "eta_max", "max_co", "transpose_stress",
-            "freefall", "rheology", "rheology_from")
+            "freefall", "rheology")
+CALIBRATION_SETTINGS = ("rheology_from", "rheology_d")   # only with --rheology-from calibration, so the
+                                                          # literature runs' settings.json stay as they were
 
 
 def settings(a, n):
     """What a run's result depends on (res/settings.json; a study reuses a run only if they match)."""
-    return dict({k: getattr(a, k) for k in SETTINGS}, mesh=n, eta_max=float(a.eta_max))
+    keys = SETTINGS + (CALIBRATION_SETTINGS if a.rheology_from == "calibration" else ())
+    return dict({k: getattr(a, k) for k in keys}, mesh=n, eta_max=float(a.eta_max))
 
 
 def finished(res, n, a):
@@ -292,6 +295,8 @@ def main():
     ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
                     help="muI parameters: Remmelgas et al.'s fit of the real spheres (default) or the DEM "
                          "calibration of the coarse-grained DEM's parcels (cases/rheology-calibration)")
+    ap.add_argument("--rheology-d", type=float, default=None,
+                    help="with the calibration: the grain diameter of I [m] instead of the parcel's (sensitivity)")
     ap.add_argument("--ascii", action="store_true", help="write the fields as ASCII (for the field profiles)")
     a = gc.cli.parse(ap, os.path.join(HERE, "results"))
     if a.quick:
@@ -305,6 +310,8 @@ def main():
         ap.error(f"--wall-friction {a.wall_friction:g}: expected a coefficient > 0")
     if a.rheology_from == "calibration" and a.rheology != "muI":
         ap.error("--rheology-from calibration: the calibration is a muI block (--rheology muI)")
+    if a.rheology_d is not None and not (a.rheology_d > 0 and a.rheology_from == "calibration"):
+        ap.error(f"--rheology-d {a.rheology_d:g}: expected a diameter > 0 [m], with --rheology-from calibration")
     if not a.max_co > 0:
         ap.error(f"--max-co {a.max_co:g}: expected a Courant number > 0")
     checks = gc.checks.Checks("mcc-hopper")
