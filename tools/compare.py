@@ -16,7 +16,9 @@ included), `--from` folders and its own `--run` output, and writes to --out
 (default CASE_DIR/compare/b<MM>):
     compare.csv, compare.md   level, model, air, steady mass flow, outlet dp/dz,
                               wall time, cores (+ W over the Beverloo middle,
-                              the Crewdson check, the source folder)
+                              the Crewdson check, the source folder, and the
+                              grid convergence index of a level whose
+                              level.json carries a 'mesh_study')
     mass_flow.png             mass flow vs time of every level with a time
                               series, the Beverloo band and the Carleton estimate
     outlet_dpdz.png           outlet air pressure gradient vs time (runs with air)
@@ -208,6 +210,20 @@ def add_crewdson(rows, rho_b):
                 r["pair"] = dry[0]
 
 
+def mesh_study_line(row):
+    """One line on a level's mesh study (its level.json 'mesh_study': N, W finest first, order,
+    extrapolated, gci_fine, convergence, source)."""
+    m = row["mesh_study"]
+    meshes = ", ".join("N = %s: %.4g" % (n, w) for n, w in zip(m["N"], m["W"]))
+    if m.get("convergence") == "monotonic":
+        result = "GCI_fine %.2f %%, observed order %.2f, extrapolated W %.4g kg/s" % (
+            100 * m["gci_fine"], m["order"], m["extrapolated"])
+    else:
+        result = "no GCI: the sequence is %s" % m.get("convergence", "unknown")
+    return "%s, %s (%s kg/s): %s (%s)" % (row["level"], row["model"], meshes, result,
+                                         os.path.join(row.get("source", ""), m.get("source", "")))
+
+
 def group_of(level):
     """Runs written together: one folder of <name>.level.json files, or sibling
     run folders each holding a level.json."""
@@ -348,7 +364,7 @@ def main(argv=None):
                          steady_mass_flow_kg_s=lv["steady_mass_flow_kg_s"],
                          outlet_dpdz_Pa_m=lv["outlet_dpdz_Pa_m"] if lv["air"] else None,
                          wall_time_s=lv["wall_time_s"], cores=lv["cores"],
-                         group=group_of(lv),
+                         group=group_of(lv), mesh_study=lv.get("mesh_study"),
                          source=os.path.relpath(lv["_dir"], case_dir), series=series))
     add_crewdson(rows, spec["rho_b"])
     rows.sort(key=lambda r: (LEVELS.index(r["level"]), r["air"], r.get("source", "")))
@@ -366,14 +382,15 @@ def main(argv=None):
     with open(os.path.join(out, "compare.csv"), "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["level", "model", "air", "steady_mass_flow_kg_s", "outlet_dpdz_Pa_m", "wall_time_s",
-                    "cores", "w_over_beverloo_middle", "crewdson_kg_s", "source"])
+                    "cores", "w_over_beverloo_middle", "crewdson_kg_s", "source", "gci_fine"])
         for r, line in zip(rows, body):
             w.writerow([r["level"], r["model"], int(r["air"]), r["steady_mass_flow_kg_s"],
                         "" if r.get("outlet_dpdz_Pa_m") is None else r["outlet_dpdz_Pa_m"],
                         r["wall_time_s"], r["cores"], line[7] if line[7] != "-" else "",
-                        r.get("crewdson_kg_s", ""), r.get("source", "")])
+                        r.get("crewdson_kg_s", ""), r.get("source", ""),
+                        (r.get("mesh_study") or {}).get("gci_fine", "")])
         for lv, why in missing:
-            w.writerow([lv, why, "", "", "", "", "", "", "", ""])
+            w.writerow([lv, why, "", "", "", "", "", "", "", "", ""])
     title = f"{spec['case']}, {'slot' if spec['orifice'] == 'slot' else 'orifice'} b = {b_mm:g} mm"
     lines = [f"# Fidelity levels: {title}", "",
              f"Written by `./granair compare` from {os.path.relpath(spec['_path'])} and the runs' level.json files "
@@ -384,6 +401,11 @@ def main(argv=None):
              f"rho_b = {spec['rho_b']:g} kg/m3. Closed forms: tools/granair_cases/closed_forms.py.", "",
              "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     lines += ["| " + " | ".join(str(x) for x in line) + " |" for line in body]
+    studies = [r for r in rows if r.get("mesh_study")]
+    if studies:
+        lines += ["", "Mesh convergence (Roache's grid convergence index over the three finest meshes, safety "
+                  "factor 1.25; tools/granair_cases/gci.py):"]
+        lines += ["- " + mesh_study_line(r) for r in studies]
     if missing:
         lines += ["", "Not in the table:"]
         lines += [f"- **{lv}**: {why}" for lv, why in missing]

@@ -20,10 +20,24 @@ BEVERLOO_C, K_RANGE = 0.58, (1.0, 3.0)   # Beverloo et al. (1961): W = C rho_b s
 WEDGE_HALF_ANGLE = math.radians(2.5)    # the axisymmetric mesh is a wedge of this half angle
 WINDOW = 0.01                     # s, averaging window of mass_flow.csv
 TOLERANCE = 0.005                 # mass balance and fill, relative
-# Steady mass flow over Beverloo (k = 1) that the runs gave (README, "Mesh
-# refinement": 0.38-1.20 for N = 10-30 with either wall; with air 0.56-1.00):
-# outside it the flow has stopped, burst or the model changed.
-BAND = (0.3, 1.3)
+FREEFALL = 0.0125                 # free-fall region below the orifice [m] (half the diameter)
+WALL_FRICTION = 0.3               # Coulomb wall friction: the DEM's particle-wall friction (assumed)
+# --rheology-from calibration: the material of calibration.json (cases/rheology-calibration)
+# whose mu(I), phi_max and parcel d replace the literature block's: the CG-DEM's s = 5 parcels
+CALIBRATION = "mcc-hopper"
+ETA_MAX = "1e5"                   # viscosity cap of mu(I) [Pa s] (README: W does not depend on it)
+MAX_CO = 0.4                      # maxCo and maxAlphaCo
+# Steady mass flow over Beverloo (k = 1) that the runs gave (README: 0.95-1.11
+# for N = 10-28 with Coulomb, free-slip and no-slip walls, with and without
+# air): outside the band the flow has stopped, burst or the model changed.
+BAND = (0.7, 1.3)
+
+# --- the mesh study (study.py --convergence, convergence.py; README "Mesh convergence") ---
+MESHES = (10, 14, 20, 28)         # cells across the orifice diameter, ratio sqrt 2; 0.89 mm >= d at 28
+# sensitivity runs on the finest mesh: tag -> the options that differ from the study's
+SENSITIVITY = {"maxCo0.2": dict(max_co=0.2), "etaMax1e6": dict(eta_max="1e6"),
+               "transposeOff": dict(transpose_stress="off"), "freefall25mm": dict(freefall=0.025)}
+TARGETS = dict(gci=0.05, sensitivity=0.02, tension=0.01)   # issue 16: GCI, W change, packed p <= 0
 # --rheology latzSchmidt: the lactose closure of reference case A on this
 # geometry (a solver test): bulk density rho_p (c0 + cMax)/2 = 1060 x 0.5675,
 # the middle of the closure's plastic range of c; particle diameter the middle

@@ -2,16 +2,35 @@
 """MCC hopper discharge with the continuum solver granairContinuumFoam (README.md).
 
     study.py [--out DIR] [--quick] [--check] [--mesh N] [--end T] [--steady-from T] [--np N]
-             [--air] [--walls slip] [--eta-max V] [--refine N1 N2 ...] [--rheology muI|latzSchmidt]
+             [--air] [--walls coulomb|slip|noSlip] [--wall-friction MU] [--eta-max V]
+             [--max-co C] [--transpose-stress on|off] [--freefall L] [--convergence] [--resume]
+             [--rheology muI|latzSchmidt] [--rheology-from literature|calibration] [--rheology-d D]
 
-One run (or one per N with --refine) from template/: the axisymmetric wedge
-mesh at resolution N (cells across the radius), the 1000 g fill, mu(I) of
-Remmelgas et al. (2019) (or the lactose latzSchmidt closure of reference case
-A on this geometry: a solver test). Per run OUT (OUT/N<n> with --refine):
-mass_flow.csv (t, mass_flow_kg_s[, outlet_dpdz_Pa_m]: 10 ms window means of
-the outlet flow; the per-step flux carries a step-to-step oscillation),
-mass_flow.png, summary.txt, level.json (muI only: a level of `./granair
-compare`); with --refine OUT/refinement.csv.
+One run from template/: the axisymmetric wedge mesh at resolution N (cells
+across the orifice diameter) with the free-fall region below the orifice, the
+1000 g fill, mu(I) of Remmelgas et al. (2019) (or the lactose latzSchmidt
+closure of reference case A on this geometry: a solver test), Coulomb wall
+friction by default. Per run OUT: mass_flow.csv (t, mass_flow_kg_s[,
+outlet_dpdz_Pa_m]: 10 ms window means of the outlet flow; the per-step flux
+carries a step-to-step oscillation), mass_flow.png, summary.txt (with the
+fraction of packed cells with p <= 0 and the outer-corrector statistics),
+level.json (muI only: a level of `./granair compare`).
+
+--rheology-from calibration: the mu(I) of the coarse-grained DEM's material
+(MCC parcels, s = 5, d = 3.3 mm), fitted from a DEM shear cell in
+cases/rheology-calibration (gc.calibration), in place of Remmelgas et al.'s
+fit of the real spheres (the default, `literature`: the material
+prediction); bulk density rho_p phi_max, Beverloo band with the parcel d.
+The run to compare with reference-cg-dem/ (README, "Cross-validation"); no
+level.json (the compare tool's continuum level is the material prediction).
+
+--convergence: first the mesh study (convergence.py, README "Mesh
+convergence"): one run per N of parameters.MESHES into OUT/convergence/N<n>
+and the sensitivity runs of parameters.SENSITIVITY on the finest mesh
+(OUT/convergence/N<n>-<tag>); runs with a summary.txt are not run again, so an
+interrupted study resumes (--resume does the same for a single run). Then Roache's GCI over the three finest meshes
+goes into OUT/convergence/convergence.{csv,json,md,png} and, as "mesh_study",
+into the level.json of the run (`./granair compare` prints it).
 
 Steady mass flow: least-squares slope of the discharged outlet mass over
 [steady-from, end]. Checked (--check exits 1 on a failure): every value
@@ -22,6 +41,7 @@ flow against the Beverloo band (k = 1..3) within the range this solver gives
 on these meshes (README); with latzSchmidt every written T finite and >= TMin.
 """
 import glob
+import json
 import math
 import os
 import time
@@ -34,8 +54,11 @@ import parameters as P
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def geometry(n, rho_b):
-    """The numbers of the wedge mesh at resolution n and of the fill (template placeholders)."""
+def geometry(n_diameter, rho_b, freefall):
+    """The numbers of the wedge mesh with n_diameter cells across the orifice
+    diameter (n_diameter/2 across the wedge's radius), the free-fall region of
+    length `freefall` [m] below the orifice, and the fill (template placeholders)."""
+    n = n_diameter // 2
     t = math.tan(P.WEDGE_HALF_ANGLE)
     z_apex = -P.H_CONE * P.R_OUT / (P.R_CYL - P.R_OUT)        # cone apex, below the orifice
     rho_out = math.hypot(P.R_OUT, z_apex)                      # radius of the exit cap
@@ -48,17 +71,35 @@ def geometry(n, rho_b):
     phi_c = math.atan2(P.R_CYL, P.H_CONE - z_centre)
     cap = (rho_out * math.sin(wall / 2), z_apex + rho_out * math.cos(wall / 2))
     junction = (r_junction * math.sin(phi_c / 2), z_centre + r_junction * math.cos(phi_c / 2))
-    # fill: the frustum less the lens between the exit cap and the orifice plane, then the cylinder
+    # fill: the frustum (the lens between the exit cap and the orifice plane is in the
+    # free-fall block, above z = 0, so it is filled too), then the cylinder
     frustum = math.pi * P.H_CONE / 3 * (P.R_CYL * P.R_CYL + P.R_CYL * P.R_OUT + P.R_OUT * P.R_OUT)
-    lens = math.pi * z_cap * z_cap * (3 * rho_out - z_cap) / 3
-    fill_z = P.H_CONE + (P.FILL_MASS / rho_b - (frustum - lens)) / (math.pi * P.R_CYL * P.R_CYL)
+    fill_z = P.H_CONE + (P.FILL_MASS / rho_b - frustum) / (math.pi * P.R_CYL * P.R_CYL)
     if not fill_z < P.H_CONE + P.H_CYL:
         raise gc.CaseError(f"{P.FILL_MASS * 1e3:.0f} g at {rho_b:g} kg/m3 does not fit in the hopper")
-    return dict(N=n, N_CONE=max(4, n), N_CYL=max(8, 2 * n), Z_CAP=z_cap, R_OUT=P.R_OUT, R_OUT_T=P.R_OUT * t,
+    # free-fall cells about as tall as the orifice cells are wide (its axis runs from -L to the cap)
+    n_fall = max(2, round((freefall + 0.5 * z_cap) / (P.R_OUT / n)))
+    return dict(N=n, N_DIAMETER=n_diameter, N_CONE=max(4, n), N_CYL=max(8, 2 * n), N_FALL=n_fall,
+                FREEFALL=freefall, Z_CAP=z_cap, R_OUT=P.R_OUT, R_OUT_T=P.R_OUT * t,
                 R_CYL=P.R_CYL, R_CYL_T=P.R_CYL * t, H_CONE=P.H_CONE, H_TOP=P.H_CONE + P.H_CYL,
                 Z_JUNCTION=z_centre + r_junction, CAP_R=cap[0], CAP_RT=cap[0] * t, CAP_Z=cap[1],
                 JUNCTION_R=junction[0], JUNCTION_RT=junction[0] * t, JUNCTION_Z=junction[1],
                 FILL_G=P.FILL_MASS * 1e3, FILL_Z=fill_z, RHO_B=rho_b)
+
+
+def walls_text(a):
+    return f"Coulomb (mu_w {a.wall_friction:g})" if a.walls == "coulomb" else a.walls
+
+
+def material(a):
+    """(bulk density [kg/m3], particle diameter [m]) of the run's powder: the latzSchmidt
+    closure's, the DEM calibration's (rho_p phi_max, the parcel d) or the real spheres'."""
+    if a.rheology == "latzSchmidt":
+        return P.LATZ["rho_bulk"], P.LATZ["d"]
+    if a.rheology_from == "calibration":
+        f = gc.calibration.fit(P.CALIBRATION)
+        return f["rho_p"] * f["phi_max"], a.rheology_d or f["d"]
+    return P.RHO_BULK, P.D_PARTICLE
 
 
 def write_run(a, n, run):
@@ -66,43 +107,105 @@ def write_run(a, n, run):
     block = os.path.join(HERE, P.LATZ["block"] if latz else "rheology/muI")
     with open(block) as fh:
         rheology = gc.template.fill(fh.read(), dict(ETA_MAX=a.eta_max), block)
-    values = dict(geometry(n, P.LATZ["rho_bulk"] if latz else P.RHO_BULK), END=a.end, NP=a.np,
-                  WRITE_FORMAT="ascii" if latz else "binary", WALLS=a.walls,
-                  AIR_MODEL="darcyErgun" if a.air else "none", DIAMETER=P.LATZ["d"] if latz else "660e-6",
+    if a.rheology_from == "calibration":
+        rheology = gc.calibration.block(rheology, P.CALIBRATION, d=a.rheology_d, where=block)
+    rho_b, d = material(a)
+    values = dict(geometry(n, rho_b, a.freefall), END=a.end, NP=a.np,
+                  WRITE_FORMAT="ascii" if latz or a.ascii else "binary",
+                  WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction),
+                  MAX_CO=a.max_co, TRANSPOSE=a.transpose_stress,
+                  AIR_MODEL="darcyErgun" if a.air else "none", DIAMETER=f"{d:.6g}",
                   RHEOLOGY=rheology)
     gc.template.render(os.path.join(HERE, "template"), run, values)
     if latz:
         gc.template.render(os.path.join(HERE, "latzSchmidt"), run, values, only=["0/T"])
 
 
-def run_one(a, n, res, checks):
-    run = os.path.join(a.out, "runs", f"N{n}")
-    gc.runner.clean(run)
-    write_run(a, n, run)
-    if a.setup_only:
+SETTINGS = ("mesh", "end", "steady_from", "air", "walls", "wall_friction", "eta_max", "max_co", "transpose_stress",
+            "freefall", "rheology")
+CALIBRATION_SETTINGS = ("rheology_from", "rheology_d")   # only with --rheology-from calibration, so the
+                                                          # literature runs' settings.json stay as they were
+
+
+def settings(a, n):
+    """What a run's result depends on (res/settings.json; a study reuses a run only if they match)."""
+    keys = SETTINGS + (CALIBRATION_SETTINGS if a.rheology_from == "calibration" else ())
+    return dict({k: getattr(a, k) for k in keys}, mesh=n, eta_max=float(a.eta_max))
+
+
+def finished(res, n, a):
+    """'summary' if res holds the finished result of these settings, 'solved' if only the
+    solver finished (post-processing left), else None."""
+    try:
+        with open(os.path.join(res, "settings.json")) as fh:
+            if json.load(fh) != settings(a, n):
+                return None
+    except (OSError, ValueError):
         return None
-    gc.runner.run(["blockMesh"], run)
-    gc.runner.run(["checkMesh"], run)
-    gc.runner.run(["setAlphaField"], run)
-    gc.runner.decompose(run, a.np)
-    cells, nonorth = gc.foam.checkmesh(os.path.join(run, "log", "checkMesh.log"))
-    print(f"mcc-hopper: N = {n}, {cells} cells, max non-orthogonality {nonorth:g}; running to t = {a.end:g} s "
-          f"({a.np} rank(s))", flush=True)
-    t0 = time.time()
-    gc.runner.run(["granairContinuumFoam"], run, np=a.np)
-    wall = round(time.time() - t0)
-    summary = post(a, run, res, n, wall, checks)
-    print(f"mcc-hopper: N = {n} took {wall} s")
-    return dict(summary, cells=cells, run_wall_s=wall)
+    if os.path.exists(os.path.join(res, "summary.txt")):
+        return "summary"
+    if os.path.exists(os.path.join(res, "run.json")):
+        return "solved"
+    return None
 
 
-def post(a, run, res, n, wall, c):
+def run_one(a, n, res, checks, level=True, reuse=False):
+    """One run into res/runs/N<n>, post-processed into res; returns its summary. With
+    reuse, a finished run of the same settings is not run again (a resumed study)."""
+    run = os.path.join(res, "runs", f"N{n}")
+    state = finished(res, n, a) if reuse else None
+    if state == "summary":
+        print(f"mcc-hopper: {os.path.relpath(res, HERE)} finished before: not run again", flush=True)
+        return gc.series.read_keys(os.path.join(res, "summary.txt"))
+    if state is None:
+        gc.runner.clean(run)
+        write_run(a, n, run)
+        if a.setup_only:
+            return None
+        gc.runner.run(["blockMesh"], run)
+        gc.runner.run(["checkMesh"], run)
+        gc.runner.run(["setAlphaField"], run)
+        gc.runner.run(["setFields"], run)
+        gc.runner.decompose(run, a.np)
+        cells, nonorth = gc.foam.checkmesh(os.path.join(run, "log", "checkMesh.log"))
+        print(f"mcc-hopper: N = {n}, {cells} cells, max non-orthogonality {nonorth:g}; running to t = {a.end:g} s "
+              f"({a.np} rank(s))", flush=True)
+        os.makedirs(res, exist_ok=True)
+        with open(os.path.join(res, "settings.json"), "w") as fh:
+            json.dump(settings(a, n), fh, indent=1)
+        t0 = time.time()
+        cpu = gc.runner.run(["granairContinuumFoam"], run, np=a.np)
+        with open(os.path.join(res, "run.json"), "w") as fh:
+            json.dump(dict(run_wall_s=round(time.time() - t0), run_cpu_s=round(cpu)), fh)
+    with open(os.path.join(res, "run.json")) as fh:
+        cost = json.load(fh)
+    summary = post(a, run, res, n, cost["run_wall_s"], cost["run_cpu_s"], checks, level)
+    print(f"mcc-hopper: N = {n} took {cost['run_wall_s']} s ({cost['run_cpu_s']:.0f} CPU-s)")
+    return summary
+
+
+def numerics(run, t0):
+    """The step statistics of the time series (PowderBalance.H): the fraction of packed
+    cells with p <= 0 beyond two cells of the outlet and the orifice plane (mean and max
+    over t >= t0), the outer correctors per step and the steps that did not converge."""
+    s = gc.series.read_csv(os.path.join(run, "postProcessing", "timeSeries.csv"), min_rows=2)
+    steady = s["t"] >= t0
+    ten = s["tension_fraction"][steady] if np.any(steady) else s["tension_fraction"]
+    return [("tension_fraction_mean", float(np.mean(ten))), ("tension_fraction_max", float(np.max(ten))),
+            ("steps", int(len(s["t"]))), ("outer_correctors_mean", float(np.mean(s["outer_correctors"]))),
+            ("unconverged_steps", int(np.sum(s["outer_converged"] == 0)))]
+
+
+def post(a, run, res, n, wall, cpu, c, level=True):
     latz = a.rheology == "latzSchmidt"
-    rho_b, d = (P.LATZ["rho_bulk"], P.LATZ["d"]) if latz else (P.RHO_BULK, P.D_PARTICLE)
+    rho_b, d = material(a)
     r = gc.powder.continuum(run)
     t = r["t"]
-    model = f"{P.LATZ['model'] if latz else 'mu(I)'}, N = {n}, {a.walls} walls"
-    o = gc.powder.continuum_outputs(r, res, a.steady_from, None, P.WINDOW, 0.0, "mass_flow.csv", None if latz else dict(
+    calibrated = a.rheology_from == "calibration"
+    model = (f"{P.LATZ['model'] if latz else 'DEM-calibrated mu(I)' if calibrated else 'mu(I)'}, N = {n}, "
+             f"{walls_text(a)} walls")
+    o = gc.powder.continuum_outputs(r, res, a.steady_from, None, P.WINDOW, 0.0, "mass_flow.csv",
+                                    None if latz or calibrated or not level else dict(
         case="mcc-hopper", model=model, b_mm=P.D_OUTLET * 1e3, wall_time_s=float(wall), cores=a.np))
     w, in_window = o["w"], o["flow"][o["centres"] >= a.steady_from]
     w_sd = float(np.sqrt(np.sum((in_window - w) ** 2) / max(1, len(in_window))))
@@ -118,19 +221,21 @@ def post(a, run, res, n, wall, c):
     if temps is not None:
         keys += [("temperature_fields", temps[1]), ("temperature_min_m2_s2", float(np.min(temps[0]))),
                  ("temperature_max_m2_s2", float(np.max(temps[0])))]
-    gc.series.write_keys(os.path.join(res, "summary.txt"), keys + [("run_wall_s", wall), ("cells", cells_of(run))])
+    keys += numerics(run, a.steady_from)
+    keys += [("run_wall_s", wall), ("run_cpu_s", float(cpu)), ("cells", cells_of(run))]
+    gc.series.write_keys(os.path.join(res, "summary.txt"), keys)
     print(f"mcc-hopper: steady mass flow {w:.4g} kg/s (t >= {a.steady_from} s; sd of 10 ms means {w_sd:.2g}); "
           f"Beverloo {bev[0]:.4g}-{bev[1]:.4g} kg/s (k = 3..1); mass balance error {r['balance']:.2e} "
           f"(solver max {r['solver_balance']:.1e}); initial {r['initial']:.6g} kg")
-    plot(o["centres"], o["flow"], w, bev, a, t[-1], f"granairContinuumFoam, N = {n}, {a.walls} walls",
-         P.LATZ["material"] if latz else "MCC hopper (Remmelgas et al. 2019)", os.path.join(res, "mass_flow.png"))
-    gc.powder.check_continuum(c, f"N = {n}", r, P.TOLERANCE, "0.5 %: a few mg leave through the top boundary "
-                              "at start-up on fine meshes (README)")
+    plot(o["centres"], o["flow"], w, bev, a, t[-1], f"granairContinuumFoam, N = {n}, {walls_text(a)} walls",
+         P.LATZ["material"] if latz else ("MCC parcels (s = 5), mu(I) calibrated from DEM" if calibrated else
+                                          "MCC hopper (Remmelgas et al. 2019)"), os.path.join(res, "mass_flow.png"))
+    gc.powder.check_continuum(c, f"N = {n}", r, P.TOLERANCE, "0.5 %: ~2e-4 of the powder leaves through the open "
+                              "side of the free-fall region, which the outlet integral counts as error (README)")
     c.near(f"N = {n}: initial powder / 1000 g fill - 1", fill_error, 0.0, P.TOLERANCE, "setAlphaField of the fill plane")
     band = P.LATZ["band"] if latz else P.BAND
     c.within(f"N = {n}: steady mass flow / Beverloo (k = 1)", w / bev[1], *band,
-             "the range this solver gives on N = 10-30 (README; the mesh is not converged): "
-             "outside it the flow has stopped, burst or changed model")
+             "the range of the runs in the README: outside it the flow has stopped, burst or changed model")
     if temps is not None:
         floor = P.LATZ["t_floor"] * (1 - 1e-9)     # written with 10 digits
         c.within(f"N = {n}: lowest granular temperature of {temps[1]} fields [m2/s2]", float(np.min(temps[0])),
@@ -166,36 +271,61 @@ def plot(tw, flow, w, bev, a, t_end, label, material, path):
 
 def main():
     ap = gc.cli.parser(__doc__)
-    ap.add_argument("--quick", action="store_true", help="N = 10, 1 s (the case test, ~10 s)")
-    ap.add_argument("--mesh", type=int, default=20, help="cells across the radius (default 20)")
+    ap.add_argument("--quick", action="store_true", help="N = 14, 1 s (the case test)")
+    ap.add_argument("--mesh", type=int, default=P.MESHES[-1],
+                    help=f"cells across the orifice diameter, even (default {P.MESHES[-1]})")
     ap.add_argument("--end", type=float, default=None, help="simulated time [s] (default 2; --quick 1)")
     ap.add_argument("--steady-from", type=float, default=0.5, help="start of the steady window [s]")
     ap.add_argument("--air", action="store_true", help="Darcy-Ergun air drag instead of the dry model")
-    ap.add_argument("--walls", choices=["noSlip", "slip"], default="noSlip")
-    ap.add_argument("--eta-max", default="1e3", help="viscosity cap of mu(I) [Pa s] (default 1e3)")
-    ap.add_argument("--refine", nargs="+", type=int, default=None, help="one run per N: OUT/refinement.csv")
+    ap.add_argument("--walls", choices=gc.foam.WALLS, default="coulomb",
+                    help="coulomb (Coulomb wall friction, default), slip (free slip) or noSlip")
+    ap.add_argument("--wall-friction", type=float, default=P.WALL_FRICTION,
+                    help=f"wall friction coefficient of --walls coulomb (default {P.WALL_FRICTION:g})")
+    ap.add_argument("--eta-max", default=P.ETA_MAX, help=f"viscosity cap of mu(I) [Pa s] (default {P.ETA_MAX})")
+    ap.add_argument("--max-co", type=float, default=P.MAX_CO, help=f"maxCo and maxAlphaCo (default {P.MAX_CO:g})")
+    ap.add_argument("--transpose-stress", choices=["on", "off"], default="on",
+                    help="the grad U^T part of the viscous stress (default on)")
+    ap.add_argument("--freefall", type=float, default=P.FREEFALL,
+                    help=f"length of the free-fall region below the orifice [m] (default {P.FREEFALL:g})")
+    ap.add_argument("--convergence", action="store_true",
+                    help="the mesh study and the sensitivity runs first (OUT/convergence), the GCI into level.json")
+    ap.add_argument("--resume", action="store_true",
+                    help="a finished run of the same settings (OUT/settings.json) is not run again")
     ap.add_argument("--rheology", choices=["muI", "latzSchmidt"], default="muI")
+    ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
+                    help="muI parameters: Remmelgas et al.'s fit of the real spheres (default) or the DEM "
+                         "calibration of the coarse-grained DEM's parcels (cases/rheology-calibration)")
+    ap.add_argument("--rheology-d", type=float, default=None,
+                    help="with the calibration: the grain diameter of I [m] instead of the parcel's (sensitivity)")
+    ap.add_argument("--ascii", action="store_true", help="write the fields as ASCII (for the field profiles)")
     a = gc.cli.parse(ap, os.path.join(HERE, "results"))
     if a.quick:
-        a.mesh = 10
+        a.mesh = 14
     a.end = a.end if a.end is not None else (1.0 if a.quick else 2.0)
-    for n in a.refine or [a.mesh]:
-        if n < 4:
-            ap.error(f"--mesh/--refine {n}: expected N >= 4")
+    if a.mesh < 8 or a.mesh % 2:
+        ap.error(f"--mesh {a.mesh}: expected an even N >= 8 (cells across the orifice diameter)")
+    if not a.freefall > 0:
+        ap.error(f"--freefall {a.freefall:g}: expected a length > 0 [m]")
+    if not a.wall_friction > 0:
+        ap.error(f"--wall-friction {a.wall_friction:g}: expected a coefficient > 0")
+    if a.rheology_from == "calibration" and a.rheology != "muI":
+        ap.error("--rheology-from calibration: the calibration is a muI block (--rheology muI)")
+    if a.rheology_d is not None and not (a.rheology_d > 0 and a.rheology_from == "calibration"):
+        ap.error(f"--rheology-d {a.rheology_d:g}: expected a diameter > 0 [m], with --rheology-from calibration")
+    if not a.max_co > 0:
+        ap.error(f"--max-co {a.max_co:g}: expected a Courant number > 0")
     checks = gc.checks.Checks("mcc-hopper")
-    if not a.refine:
-        run_one(a, a.mesh, a.out, checks)
-    else:
-        rows = [run_one(a, n, os.path.join(a.out, f"N{n}"), checks) for n in a.refine]
-        if not a.setup_only:
-            path = gc.series.write_rows(os.path.join(a.out, "refinement.csv"), [
-                dict(N=n, cells=r["cells"], steady_mass_flow_kg_s=r["steady_mass_flow_kg_s"],
-                     window_sd_kg_s=r["window_mass_flow_sd_kg_s"], mass_balance_error=r["mass_balance_error"],
-                     run_wall_s=r["run_wall_s"]) for n, r in zip(a.refine, rows)], fmt="{:.6g}")
-            print(f"mcc-hopper: refinement table {path}\n" + open(path).read())
+    study = None
+    if a.convergence and not a.setup_only:
+        import convergence
+        study = convergence.study(a, lambda b, n, res: run_one(b, n, res, checks, level=False, reuse=True))
+    run_one(a, a.mesh, a.out, checks, reuse=a.convergence or a.resume)
     if a.setup_only:
-        return print(f"mcc-hopper: run folders written to {a.out}/runs")
+        return print(f"mcc-hopper: run folder written to {a.out}/runs")
+    if study is not None:
+        convergence.add_to_level(study, os.path.join(a.out, "level.json"))
     checks.report(enforce=a.check)
+
 
 if __name__ == "__main__":
     gc.cli.main(main)

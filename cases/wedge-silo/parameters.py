@@ -20,6 +20,7 @@ NU = 0.3                 # Poisson ratio
 RESTITUTION = 0.67
 FRICTION_PP = 0.95       # particle-particle sliding friction
 WALL_FRICTION_ANGLE = 16.0   # aluminium wall friction angle [deg]
+WALL_FRICTION = math.tan(math.radians(WALL_FRICTION_ANGLE))   # mu_w of the continuum's Coulomb walls
 K_COH_REAL = 1.0e5       # SJKR cohesion energy density at E_REAL [J/m3]
 AIR_RHO, AIR_MU = 1.2, 1.8e-5
 G = 9.81
@@ -130,5 +131,9 @@ PORE_VS_POWDER = 0.10    # pore-volume growth vs powder volume discharged, relat
 CG_VOLUME_QUADRATURE = 1e-3   # CG solid volume in the window vs the parcels' kernel-weighted volume, relative
 CG_VS_AIR_BULK = 0.03         # bulk mean CG solid fraction vs 1 - air void fraction, relative
 CG_BULK_MIN_SOLID = 0.45      # "bulk": cells of the air mesh denser than this (not the dilated outflow)
-CONTINUUM_W_OVER_DEM = (1.5, 4.0)
+CONTINUUM_W_OVER_DEM = (1.2, 2.2)   # committed runs 1.40-1.87 (Coulomb walls, free fall; README)
+# --rheology-from calibration (continuum.py): the material of calibration.json
+# (cases/rheology-calibration, the study-size parcels) and issue 16's target against the DEM
+CALIBRATION = "wedge-silo"
+CALIBRATED_W_OVER_DEM = (0.85, 1.15)
 CONTINUUM_DPDZ_OVER_DEM = (0.5, 1.6)

@@ -80,7 +80,7 @@ def numbers(a, b_mm, air):
                 WRITE_EVERY=round(every / cfg["cfd_dt"]), SNAP=round(every / dem_dt), NP=a.np,
                 AIR="on" if air else "off", KERNEL_WIDTH=h, OUTLET_X=b / 2 + 1e-6, ABOVE_Z=z_above,
                 ABOVE_X=b / 2 + z_above * math.tan(theta) + 1e-6, ABOVE_Z_LO=z_above - 1e-4,
-                ABOVE_Z_HI=z_above + 1e-4, SKIN=0.3 * d, YOUNGS=youngs, MU_W=math.tan(math.radians(P.WALL_FRICTION_ANGLE)),
+                ABOVE_Z_HI=z_above + 1e-4, SKIN=0.3 * d, YOUNGS=youngs, MU_W=P.WALL_FRICTION,
                 COHESION=a.cohesion, K_COH=k_coh, R_TYPE=s * P.D_MEAN_PSD / 2, CHUNK=chunk,
                 SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
                 if youngs < 5e6 else "# (E >= 5e6 Pa: no soft_particles needed)",

@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 #include "AirPercolation.H"
 
+#include <limits>
+
 #include <string>
 
 #include "GranularMixture.H"
@@ -233,6 +235,29 @@ scalar AirPercolation::patchGradient(label patchi, const vector& direction) cons
     const scalarField area(patch.magSf());
     const scalar totalArea = gSum(area);
     return totalArea > 0 ? gSum(area*dpdn*(patch.nf() & direction))/totalArea : 0;
+}
+
+scalar AirPercolation::planeGradient(scalar height, const vector& direction) const
+{
+    // Internal faces on the plane (x.direction = height) whose normal is along direction.
+    const surfaceScalarField dpdn(fvc::snGrad(pAir_));
+    const vectorField& Cf = mesh_.Cf().primitiveField();
+    const vectorField& Sf = mesh_.Sf().primitiveField();
+    const scalarField& magSf = mesh_.magSf().primitiveField();
+    const scalar tol = 1e-6*Foam::cbrt(gAverage(mesh_.V().field()));
+    scalar sumArea = 0, sum = 0;
+    forAll(Cf, facei)
+    {
+        const scalar along = (Sf[facei] & direction)/magSf[facei];
+        if (mag((Cf[facei] & direction) - height) < tol && mag(along) > 0.999)
+        {
+            sumArea += magSf[facei];
+            sum += magSf[facei]*dpdn[facei]*along;
+        }
+    }
+    reduce(sumArea, sumOp<scalar>());
+    reduce(sum, sumOp<scalar>());
+    return sumArea > 0 ? sum/sumArea : std::numeric_limits<scalar>::quiet_NaN();
 }
 
 } // namespace granair

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "GranularMixture.H"
 
+#include <cmath>
 #include <string>
 
 #include "core/Collective.hpp"
@@ -71,7 +72,11 @@ GranularMixture::GranularMixture(const fvMesh& mesh, const ::granair::Dictionary
     rhoPowder_(properties.subDict("powder").getDouble("rho", 1e-3, 1e5)),
     rhoAir_(properties.subDict("air").getDouble("rho", 1e-6, 1e4)),
     muAir_(properties.subDict("air").getDouble("mu", 1e-9, 1e3)),
-    relax_(properties.getDouble("viscosityRelaxation", 1.0)),
+    relax_(properties.getDouble("viscosityRelaxation", 0.5)),
+    aitken_(properties.getBool("viscosityAitken", true)),
+    omega_(relax_),
+    omegaMin_(0.05),
+    omegaMax_(20),
     alpha_
     (
         IOobject("alpha.powder", mesh.time().timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE),
@@ -97,14 +102,16 @@ GranularMixture::GranularMixture(const fvMesh& mesh, const ::granair::Dictionary
         );
     }
     rho_.oldTime();
-    // Before the first step: the powder at rest, viscosity at the cap (both
-    // rheologies reach it at rest: gammaDot -> 0, or T at its floor), and the
-    // solid fraction of the powder at rest (latzSchmidt: c0, the packed
-    // state; replaced by c(p, T) in the first correctViscosity).
+    // Before the first step: the powder at rest under load, viscosity at the
+    // cap (both rheologies reach it at rest: gammaDot -> 0 at p > 0, or T at
+    // its floor; muI at 1 kPa and gammaDot = 0), and the solid fraction of the
+    // powder at rest (latzSchmidt: c0, the packed state). Both are replaced in
+    // the first correctViscosity; only the fields written at t = 0 keep them.
+    const scalar pRest = 1e3;
     const scalar etaRest =
-        viscoplastic_ ? viscoplastic_->viscosity(0, 0) : temperature_->model().parameters().etaMax;
+        viscoplastic_ ? viscoplastic_->viscosity(pRest, 0) : temperature_->model().parameters().etaMax;
     const scalar phiRest =
-        viscoplastic_ ? viscoplastic_->solidFraction(0, 0) : temperature_->model().closure().parameters().c0;
+        viscoplastic_ ? viscoplastic_->solidFraction(pRest, 0) : temperature_->model().closure().parameters().c0;
     mu_ = alpha_*dimensionedScalar("etaRest", dimDynamicViscosity, etaRest)
         + (scalar(1) - alpha_)*dimensionedScalar("muAir", dimDynamicViscosity, muAir_);
     mu_.correctBoundaryConditions();
@@ -118,11 +125,40 @@ void GranularMixture::correctDensity()
     rho_ == a*dimensionedScalar("rhoPowder", dimDensity, rhoPowder_) + (scalar(1) - a)*dimensionedScalar("rhoAir", dimDensity, rhoAir_);
 }
 
+void GranularMixture::relaxViscosity(const scalarField& target, bool firstCorrector)
+{
+    scalarField& eta = eta_.primitiveFieldRef();
+    // In log space: eta spans orders of magnitude, and a step in ln(eta) is
+    // a relative change of the viscosity.
+    const scalarField r(log(max(target, VSMALL)) - log(max(eta, VSMALL)));
+    scalar omega = relax_;
+    if (aitken_ && !firstCorrector && residual_.size() == r.size())
+    {
+        const scalarField w(min(max(alpha_.primitiveField(), scalar(0)), scalar(1)));
+        const scalarField dr(r - residual_);
+        const scalar drdr = gSum(w*dr*dr);
+        omega = drdr > 0 ? -omega_*gSum(w*residual_*dr)/drdr : omega_;
+        omega = min(max(omega, omegaMin_), omegaMax_);
+    }
+    // Keep the iterate inside the range the rheology itself returns.
+    const scalar lo = log(max(gMin(target), VSMALL));
+    const scalar hi = log(max(gMax(target), VSMALL));
+    eta = exp(min(max(log(max(eta, VSMALL)) + omega*r, lo), hi));
+    residual_ = r;
+    omega_ = omega;
+}
+
+tmp<surfaceScalarField> GranularMixture::faceViscosity() const
+{
+    return tmp<surfaceScalarField>::New("muf", scalar(1)/fvc::interpolate(scalar(1)/mu_));
+}
+
 void GranularMixture::correctViscosity
 (
     const volVectorField& U,
     const surfaceScalarField& phiFlux,
-    const volScalarField& p
+    const volScalarField& p,
+    bool firstCorrector
 )
 {
     const volTensorField gradU(fvc::grad(U));
@@ -147,6 +183,7 @@ void GranularMixture::correctViscosity
         temperature_->solve(alpha_, phiFlux, p, gd);
     }
 
+    scalarField etaTarget(eta.size());
     std::string error;
     try
     {
@@ -158,7 +195,9 @@ void GranularMixture::correctViscosity
                 if (viscoplastic_)
                 {
                     etaNew = viscoplastic_->viscosity(pc[celli], gd[celli]);
-                    I[celli] = viscoplastic_->inertialNumber(pc[celli], gd[celli]);
+                    // -1 marks the stress-free cells (p <= 0), where I is infinite.
+                    const scalar In = viscoplastic_->inertialNumber(pc[celli], gd[celli]);
+                    I[celli] = std::isfinite(In) ? In : -1;
                     phi[celli] = viscoplastic_->solidFraction(pc[celli], gd[celli]);
                 }
                 else
@@ -167,7 +206,7 @@ void GranularMixture::correctViscosity
                     etaNew = cell.eta;
                     phi[celli] = cell.c;
                 }
-                eta[celli] = relax_*etaNew + (1 - relax_)*eta[celli];
+                etaTarget[celli] = etaNew;
             }
             catch (const ::granair::InputError& e)
             {
@@ -177,8 +216,6 @@ void GranularMixture::correctViscosity
                     mesh_.C()[celli].z(), " m, time ", mesh_.time().value(), " s"
                 );
             }
-            const scalar a = min(max(alpha[celli], scalar(0)), scalar(1));
-            mu[celli] = a*eta[celli] + (1 - a)*muAir_;
         }
     }
     catch (const ::granair::InputError& e)
@@ -187,6 +224,15 @@ void GranularMixture::correctViscosity
     }
     // Every rank reaches this point, so an error on one rank ends all of them together.
     ::granair::raiseIfAny(MPI_COMM_WORLD, error);
+
+    relaxViscosity(etaTarget, firstCorrector);
+    forAll(eta, celli)
+    {
+        const scalar a = min(max(alpha[celli], scalar(0)), scalar(1));
+        // Never below the air's: a rheology may return 0 (latzSchmidt where
+        // c = 0), and the harmonic face viscosity divides by mu.
+        mu[celli] = a*max(eta[celli], muAir_) + (1 - a)*muAir_;
+    }
 
     for (volScalarField* f : {&eta_, &mu_, &I_, &gammaDot_, &phiSolid_})
     {

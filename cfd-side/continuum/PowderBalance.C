@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 #include "PowderBalance.H"
 
+#include <cmath>
+
 #include "AirPercolation.H"
 #include "core/Error.hpp"
 #include "uniformDimensionedFields.H"
@@ -34,6 +36,48 @@ scalar revolutionScale(const fvMesh& mesh)
     return 1;
 }
 
+// The cells where the powder is stress-free by the boundary conditions, not
+// by the numerics, which the tension_fraction leaves out: the first two cell
+// layers at the outlet patch (p = 0 there) and, when the mesh continues below
+// the orifice (orificeHeight given), everything below the orifice plane (the
+// falling jet) and two layers above it. Layers grow by face neighbours; those
+// across processor boundaries are not marked (a decomposed run counts a few
+// more cells).
+boolList stressFreeByConstruction
+(
+    const fvMesh& mesh,
+    label patchi,
+    scalar orificeHeight,
+    const vector& up
+)
+{
+    boolList mark(mesh.nCells(), false);
+    for (const label c : mesh.boundary()[patchi].faceCells())
+    {
+        mark[c] = true;
+    }
+    if (orificeHeight < VGREAT)
+    {
+        forAll(mark, c)
+        {
+            if ((mesh.C()[c] & up) < orificeHeight) mark[c] = true;
+        }
+    }
+    for (int layer = 1; layer < 2 + (orificeHeight < VGREAT ? 1 : 0); ++layer)
+    {
+        const boolList previous(mark);
+        forAll(previous, c)
+        {
+            if (!previous[c]) continue;
+            for (const label n : mesh.cellCells()[c])
+            {
+                mark[n] = true;
+            }
+        }
+    }
+    return mark;
+}
+
 } // namespace
 
 PowderBalance::PowderBalance
@@ -43,7 +87,8 @@ PowderBalance::PowderBalance
     scalar rhoPowder,
     const volScalarField& alpha,
     bool withAir,
-    const fileName& directory
+    const fileName& directory,
+    scalar orificeHeight
 )
 :
     mesh_(mesh),
@@ -52,9 +97,15 @@ PowderBalance::PowderBalance
     scale_(revolutionScale(mesh)),
     up_(0, 0, 1),
     air_(withAir),
+    orificeHeight_(orificeHeight),
     initialMass_(0),
     discharged_(0),
-    lastFlow_(0)
+    lastFlow_(0),
+    steps_(0),
+    unconvergedSteps_(0),
+    maxOuter_(0),
+    sumOuter_(0),
+    lastTensionFraction_(0)
 {
     if (outletPatch_ < 0)
     {
@@ -65,6 +116,7 @@ PowderBalance::PowderBalance
     }
     const uniformDimensionedVectorField& g = meshObjects::gravity::New(mesh.time());
     if (mag(g.value()) > SMALL) up_ = -g.value()/mag(g.value());
+    nearOutlet_ = stressFreeByConstruction(mesh, outletPatch_, orificeHeight_, up_);
     initialMass_ = powderMass(alpha);
 
     std::vector<::granair::Column> columns{
@@ -74,6 +126,12 @@ PowderBalance::PowderBalance
     {
         columns.push_back({"outlet_dpdz_Pa_m", "Pa/m"});
         columns.push_back({"air_p_min_Pa", "Pa"});
+    }
+    for (const ::granair::Column& c : std::vector<::granair::Column>{
+             {"outer_correctors", "-"}, {"outer_residual_U", "-"}, {"outer_residual_p", "-"},
+             {"outer_converged", "-"}, {"tension_fraction", "-"}})
+    {
+        columns.push_back(c);
     }
     mkDir(directory);
     writer_ = std::make_unique<::granair::TimeSeriesWriter>(MPI_COMM_WORLD, directory/"timeSeries", columns);
@@ -92,7 +150,14 @@ scalar PowderBalance::relativeBalanceError(const volScalarField& alpha) const
     return (powderMass(alpha) + discharged_ - initialMass_)/initialMass_;
 }
 
-void PowderBalance::record(const volScalarField& alpha, const surfaceScalarField& alphaPhi, const AirPercolation& air)
+void PowderBalance::record
+(
+    const volScalarField& alpha,
+    const surfaceScalarField& alphaPhi,
+    const AirPercolation& air,
+    const volScalarField& p,
+    const StepStatistics& step
+)
 {
     const scalar dt = mesh_.time().deltaTValue();
     scalar outletFlux = 0;
@@ -113,10 +178,42 @@ void PowderBalance::record(const volScalarField& alpha, const surfaceScalarField
     std::vector<double> row{mesh_.time().value(), lastFlow_, discharged_, mass, (mass + discharged_ - initialMass_)/initialMass_};
     if (air_)
     {
-        row.push_back(air.patchGradient(outletPatch_, up_));
+        // On the orifice plane where the mesh has faces there (the wedge
+        // silo); else (the MCC cap is curved) on the outlet patch.
+        const scalar onPlane = orificeHeight_ < VGREAT ? air.planeGradient(orificeHeight_, up_) : VGREAT;
+        row.push_back(std::isfinite(onPlane) && onPlane < VGREAT ? onPlane : air.patchGradient(outletPatch_, up_));
         row.push_back(gMin(air.pAir().primitiveField()));
     }
+
+    label packed = 0, tension = 0;
+    forAll(alpha, celli)
+    {
+        if (alpha[celli] > 0.99 && !nearOutlet_[celli])
+        {
+            ++packed;
+            if (p[celli] <= 0) ++tension;
+        }
+    }
+    reduce(packed, sumOp<label>());
+    reduce(tension, sumOp<label>());
+    lastTensionFraction_ = packed > 0 ? scalar(tension)/packed : scalar(0);
+
+    ++steps_;
+    sumOuter_ += step.outerCorrectors;
+    maxOuter_ = max(maxOuter_, step.outerCorrectors);
+    if (!step.converged) ++unconvergedSteps_;
+    for (const scalar v : {scalar(step.outerCorrectors), step.residualU, step.residualP,
+                           scalar(step.converged ? 1 : 0), lastTensionFraction_})
+    {
+        row.push_back(v);
+    }
     writer_->append(row);
+}
+
+void PowderBalance::reportIterations() const
+{
+    Info<< "outer correctors: " << steps_ << " steps, mean " << (steps_ ? sumOuter_/steps_ : 0) << ", most "
+        << maxOuter_ << " per step; steps not converged within nOuterCorrectors: " << unconvergedSteps_ << endl;
 }
 
 } // namespace granair

@@ -17,16 +17,25 @@ Description
                                      + div(mu (grad U + grad U^T)) - grad(p_a)
         p = p_rgh + rho (g.x - g.hRef)   the mixture pressure the rheology sees
 
-    Pressure-velocity coupling: PIMPLE, as interFoam (p_rgh, face-based
-    gravity and air force). Time step from maxCo and maxAlphaCo.
+    Pressure-velocity coupling: PIMPLE as interFoam (p_rgh, face-based
+    gravity and air force), with outer correctors under residual control
+    or (the default) one per step as a semi-implicit time march
+    (OuterCorrectors.H: why), an inertial projection in the pressure
+    correction, the stress split so that its transpose part is stable, and
+    harmonic face viscosity. Time step from maxCo and maxAlphaCo.
 
 Files
     constant/granularProperties (GranularMixture.H, AirPercolation.H, and
-        outletPatch <name>;  the patch the discharge goes through, default outlet),
+        outletPatch <name>;  the patch the discharge goes through, default outlet;
+        acceleration (ax ay az);  optional uniform acceleration besides g [m/s2];
+        orificeHeight h;     optional: outlet dp/dz measured on the plane z = h, PowderBalance.H),
     constant/g, optional constant/hRef,
     0/U, 0/p_rgh, 0/alpha.powder, 0/p_air (darcyErgun), 0/T (latzSchmidt),
     system/fvSolution: solvers { alpha.powder p_rgh p_rghFinal U p_air T },
-        PIMPLE { nOuterCorrectors nCorrectors nNonOrthogonalCorrectors momentumPredictor },
+        PIMPLE { nOuterCorrectors outerTolerance nCorrectors nNonOrthogonalCorrectors
+                 momentumPredictor pressureCorrection transposeStress } (OuterCorrectors.H),
+    0/U walls: noSlip, slip or coulombWallSlip (Coulomb wall friction,
+        CoulombWallSlipFvPatchVectorField.H),
     system/controlDict: adjustTimeStep, maxCo, maxAlphaCo, maxDeltaT.
     Output: postProcessing/timeSeries.csv (PowderBalance.H), time directories.
 
@@ -36,15 +45,16 @@ Reference
     (2006) Nature 441:727.
 \*---------------------------------------------------------------------------*/
 #include "fvCFD.H"
-#include "pimpleControl.H"
 #include "constrainHbyA.H"
 #include "constrainPressure.H"
+#include "adjustPhi.H"
 #include "uniformDimensionedFields.H"
 #include "foamRuntime.H"
 
 #include "AirPercolation.H"
 #include "AlphaAdvection.H"
 #include "GranularMixture.H"
+#include "OuterCorrectors.H"
 #include "PowderBalance.H"
 #include "Reconstruct.H"
 #include "TimeControls.H"
@@ -86,6 +96,47 @@ void adjustDeltaT(Time& runTime, scalar co, scalar alphaCo)
     runTime.setDeltaT(min(min(factor*dt, (1.0 + 0.2*factor)*dt), min(1.2*dt, maxDeltaT)));
 }
 
+// p_rgh of the powder at rest: with U = 0 the face fluxes must balance the
+// face-based gravity force alone, laplacian(p_rgh) = div(-ghf snGrad(rho) |Sf|)
+// (unit coefficient), with the case's pressure boundary conditions.
+void hydrostaticStart
+(
+    volScalarField& p_rgh,
+    volScalarField& p,
+    const volVectorField& U,
+    const volScalarField& rho,
+    const volScalarField& gh,
+    const surfaceScalarField& ghf,
+    label pRefCell,
+    scalar pRefValue,
+    label nNonOrth
+)
+{
+    const fvMesh& mesh = p_rgh.mesh();
+    const surfaceScalarField unit
+    (
+        IOobject("unit", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar("unit", dimless, 1.0)
+    );
+    const surfaceScalarField phig(-ghf*fvc::snGrad(rho)*mesh.magSf());
+    constrainPressure(p_rgh, U, phig, unit);
+    for (label nonOrth = 0; nonOrth <= nNonOrth; ++nonOrth)
+    {
+        fvScalarMatrix p_rghEqn(fvm::laplacian(unit, p_rgh) == fvc::div(phig));
+        p_rghEqn.setReference(pRefCell, getRefCellValue(p_rgh, pRefCell));
+        p_rghEqn.solve(mesh.solver(p_rgh.select(true)));
+    }
+    p == p_rgh + rho*gh;
+    if (p_rgh.needReference())
+    {
+        p += dimensionedScalar("p", p.dimensions(), pRefValue - getRefCellValue(p, pRefCell));
+        p_rgh = p - rho*gh;
+    }
+    Info<< "initial pressure: hydrostatic, p in [" << gMin(p.primitiveField()) << ", " << gMax(p.primitiveField())
+        << "] Pa" << nl << endl;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -104,7 +155,7 @@ int main(int argc, char* argv[])
         (
             runTime.globalPath()/"constant"/"granularProperties"
         );
-        pimpleControl pimple(mesh);
+        const Foam::granair::OuterCorrectors outer(mesh);
 
         #include "readGravitationalAcceleration.H"
         #include "readhRef.H"
@@ -148,7 +199,7 @@ int main(int argc, char* argv[])
         );
         label pRefCell = 0;
         scalar pRefValue = 0.0;
-        setRefCell(p, p_rgh, pimple.dict(), pRefCell, pRefValue);
+        setRefCell(p, p_rgh, outer.dict(), pRefCell, pRefValue);
         if (p_rgh.needReference())
         {
             p += dimensionedScalar("p", p.dimensions(), pRefValue - getRefCellValue(p, pRefCell));
@@ -158,6 +209,11 @@ int main(int argc, char* argv[])
         mesh.setFluxRequired(alpha.name());
 
         Foam::granair::AirPercolation air(mesh, properties, mixture);
+        // An optional uniform acceleration [m/s2] besides g: the along-slope
+        // part of gravity on a periodic inclined plane, which cannot enter
+        // through g.h (p_rgh = p - rho g.h would jump across the cyclic).
+        const ::granair::Vec3 a = properties.getVec3("acceleration", ::granair::Vec3::Zero());
+        const dimensionedVector acceleration("acceleration", dimAcceleration, vector(a[0], a[1], a[2]));
         Foam::granair::PowderBalance balance
         (
             mesh,
@@ -165,14 +221,23 @@ int main(int argc, char* argv[])
             mixture.rhoPowder(),
             alpha,
             air.enabled(),
-            runTime.globalPath()/"postProcessing"
+            runTime.globalPath()/"postProcessing",
+            properties.getDouble("orificeHeight", VGREAT)
         );
 
         Info<< "granairContinuumFoam: rheology " << mixture.rheology().name().c_str()
             << ", air model " << (air.enabled() ? "darcyErgun" : "none") << ", "
             << returnReduce(mesh.nCells(), sumOp<label>()) << " cells" << nl << endl;
 
-        const bool transposeStress = pimple.dict().lookupOrDefault<Switch>("transposeStress", true);
+        // The powder starts at rest: its pressure is the hydrostatic one, the
+        // projection of gravity with U = 0 (as Basilisk's sandglass starts
+        // from the lithostatic pressure), so the first viscosity sees p > 0
+        // in the powder and not the p_rgh = 0 of 0/p_rgh.
+        if (gMax(mag(U.primitiveField())) == 0)
+        {
+            hydrostaticStart(p_rgh, p, U, rho, gh, ghf, pRefCell, pRefValue, outer.nNonOrth);
+        }
+
         scalar cumulativeContErr = 0;
         while (runTime.run())
         {
@@ -183,44 +248,77 @@ int main(int argc, char* argv[])
             Info<< "Time = " << runTime.timeName() << "  deltaT = " << runTime.deltaTValue()
                 << "  Co = " << co << "  alphaCo = " << alphaCo << endl;
 
-            while (pimple.loop())
+            // Explicit (MULES) powder transport with the fluxes of the last step.
+            Foam::granair::advectAlpha(alpha, phi, alphaPhi);
+            rhoPhi = alphaPhi*(rhoPowder - rhoAir) + phi*rhoAir;
+            mixture.correctDensity();
+
+            // Outer correctors (OuterCorrectors.H): relaxed (relaxationFactors
+            // U, p_rgh) until converged, then one final, unrelaxed corrector (UFinal,
+            // p_rghFinal): a PISO step from the converged state, so a step that
+            // stops at nOuterCorrectors is still a stable time step.
+            Foam::granair::StepStatistics step{0, GREAT, GREAT, false};
+            bool finalCorr = false;
+            for (label corr = 1; ; ++corr)
             {
-                if (pimple.firstIter())
+                finalCorr = finalCorr || corr >= outer.nOuter;
+                if (finalCorr)
                 {
-                    Foam::granair::advectAlpha(alpha, phi, alphaPhi);
-                    rhoPhi = alphaPhi*(rhoPowder - rhoAir) + phi*rhoAir;
-                    mixture.correctDensity();
+                    mesh.data::add("finalIteration", true);
                 }
-                // The viscosity at the latest U and p in every outer corrector, so
-                // nOuterCorrectors > 1 converges the rheology with the pressure
-                // (with 1 corrector it lags one step, as interFoam's).
-                mixture.correctViscosity(U, phi, p);
-                if (pimple.firstIter())
+                const volVectorField U0("U0", U);
+                const volScalarField p0("p0", p);
+                p_rgh.storePrevIter();
+
+                // Viscosity at the latest U and p (a Picard iterate of the rheology).
+                mixture.correctViscosity(U, phi, p, corr == 1);
+                if (corr == 1)
                 {
                     air.solve(mixture, alphaPhi, phi);
                 }
-                const surfaceScalarField airForce(air.faceForce());
-                const volScalarField& mu = mixture.mu();
+                // Face forces besides gravity: the air's, and the optional uniform
+                // acceleration (rho_f a.Sf/|Sf|).
+                surfaceScalarField airForce(air.faceForce());
+                if (mag(acceleration.value()) > 0)
+                {
+                    airForce += fvc::interpolate(rho)*(acceleration & mesh.Sf())/mesh.magSf();
+                }
+                const surfaceScalarField muf(mixture.faceViscosity());
 
-                // Momentum: viscous stress div(mu (grad U + grad U^T)), the grad U part
-                // implicit, the transpose part explicit (as OpenFOAM's laminar
-                // models; for div U = 0 it is grad(mu).grad U^T, zero where mu is
-                // uniform). PIMPLE { transposeStress off; } leaves it out
-                // (docs/continuum-model.md: its effect on the discharge rate). gradU is a
-                // named field: T() of a temporary transposes in place (Reconstruct.H).
-                fvVectorMatrix UEqn
+                // Viscous stress div(mu (grad U + grad U^T)). For div U = 0 its
+                // transpose part is grad(mu).(grad U)^T, which a segregated
+                // solver can only treat explicitly. Explicit beside an implicit
+                // div(mu grad U) it diverges once mu dt/(rho dx^2) >> 1 at a jump
+                // of mu (a strain mode is amplified by -1 per corrector); so, as
+                // Jasak & Weller (2000) do for the stress of solids, the
+                // implicit part carries twice the viscosity and the explicit
+                // part the difference:
+                //     - div(2 mu grad U) + [div(mu grad U) - div(mu grad U^T)]
+                // The explicit bracket is then bounded by the implicit operator
+                // (0 <= N <= M in energy), the corrector iteration contracts, and
+                // at convergence the two div(mu grad U) cancel: the step solves
+                // the full stress. mu on faces is harmonic (GranularMixture.H).
+                tmp<fvVectorMatrix> tUEqn
                 (
                     fvm::ddt(rho, U) + fvm::div(rhoPhi, U)
-                  - fvm::laplacian(fvc::interpolate(mu), U)
                 );
-                if (transposeStress)
+                if (outer.transposeStress)
                 {
                     const volTensorField gradU(fvc::grad(U));
                     const volTensorField gradUT(gradU.T());
-                    UEqn -= fvc::div(mu*dev2(gradUT));
+                    const surfaceScalarField muf2("muf2", 2*muf);
+                    tUEqn.ref() +=
+                        fvc::laplacian(muf, U)
+                      - fvc::div(muf*(mesh.Sf() & fvc::interpolate(dev2(gradUT))))
+                      - fvm::laplacian(muf2, U);
                 }
+                else
+                {
+                    tUEqn.ref() -= fvm::laplacian(muf, U);
+                }
+                fvVectorMatrix& UEqn = tUEqn.ref();
                 UEqn.relax();
-                if (pimple.momentumPredictor())
+                if (outer.momentumPredictor)
                 {
                     solve
                     (
@@ -229,39 +327,64 @@ int main(int argc, char* argv[])
                     );
                 }
 
-                // Pressure correctors: interFoam's pEqn without surface tension, the
-                // velocity from the face fluxes with reconstructVector (Reconstruct.H).
-                while (pimple.correct())
+                // Pressure correctors: interFoam's p_rgh equation (face-based
+                // gravity and air force), with the inertial projection when asked:
+                // OuterCorrectors.H. The velocity from the face fluxes with
+                // reconstructVector (Reconstruct.H).
+                for (label piso = 0; piso < outer.nCorr; ++piso)
                 {
                     const volScalarField rAU(1.0/UEqn.A());
+                    // The velocity correction of the pressure equation: 1/A (PISO), or
+                    // dt/rho (the inertial projection, OuterCorrectors.H).
+                    const volScalarField rAtU("rAtU", outer.inertialProjection ? volScalarField(runTime.deltaT()/rho) : rAU);
+                    const surfaceScalarField rAUf("rAUf", fvc::interpolate(rAU));
+                    const surfaceScalarField rAtUf("rAtUf", fvc::interpolate(rAtU));
+
                     volVectorField HbyA(constrainHbyA(rAU*UEqn.H(), U, p_rgh));
                     surfaceScalarField phiHbyA
                     (
                         "phiHbyA",
                         fvc::flux(HbyA) + fvc::interpolate(rho*rAU)*fvc::ddtCorr(U, phi)
                     );
-                    const surfaceScalarField rAUf("rAUf", fvc::interpolate(rAU));
                     const surfaceScalarField phig((-ghf*fvc::snGrad(rho) + airForce)*rAUf*mesh.magSf());
                     phiHbyA += phig;
-                    constrainPressure(p_rgh, U, phiHbyA, rAUf);
-
-                    while (pimple.correctNonOrthogonal())
+                    if (outer.inertialProjection)
                     {
-                        fvScalarMatrix p_rghEqn(fvm::laplacian(rAUf, p_rgh) == fvc::div(phiHbyA));
+                        // U = HbyA + rAU (F - grad p*) - rAtU grad(p - p*): the
+                        // old pressure's gradient with rAU, its correction with rAtU.
+                        const surfaceScalarField snGradP(fvc::snGrad(p_rgh)*mesh.magSf());
+                        phiHbyA += (rAtUf - rAUf)*snGradP;
+                        HbyA -= (rAU - rAtU)*reconstructVector(snGradP);
+                    }
+                    if (p_rgh.needReference())
+                    {
+                        // A closed domain: the fluxes must balance before the
+                        // pressure equation can (its solution is then unique up to
+                        // the reference level).
+                        adjustPhi(phiHbyA, U, p_rgh);
+                    }
+                    constrainPressure(p_rgh, U, phiHbyA, rAtUf);
+
+                    for (label nonOrth = 0; nonOrth <= outer.nNonOrth; ++nonOrth)
+                    {
+                        fvScalarMatrix p_rghEqn(fvm::laplacian(rAtUf, p_rgh) == fvc::div(phiHbyA));
                         p_rghEqn.setReference(pRefCell, getRefCellValue(p_rgh, pRefCell));
-                        p_rghEqn.solve(mesh.solver(p_rgh.select(pimple.finalInnerIter())));
-                        if (pimple.finalNonOrthogonalIter())
+                        const bool final = piso == outer.nCorr - 1 && nonOrth == outer.nNonOrth;
+                        p_rghEqn.solve(mesh.solver(p_rgh.select(final)));
+                        if (nonOrth == outer.nNonOrth)
                         {
+                            // The flux from the pressure equation (continuity); the
+                            // velocity from the relaxed pressure (p_rgh, SIMPLE's rule).
                             phi = phiHbyA - p_rghEqn.flux();
                             p_rgh.relax();
-                            U = HbyA + rAU*reconstructVector((phig - p_rghEqn.flux())/rAUf);
+                            U = HbyA + rAU*reconstructVector(phig/rAUf)
+                              - rAtU*reconstructVector(fvc::snGrad(p_rgh)*mesh.magSf());
                             U.correctBoundaryConditions();
                         }
                     }
 
                     const scalar contErr = runTime.deltaTValue()*mag(fvc::div(phi))().weightedAverage(mesh.V()).value();
                     cumulativeContErr += contErr;
-                    Info<< "continuity error " << contErr << ", cumulative " << cumulativeContErr << endl;
 
                     p == p_rgh + rho*gh;
                     if (p_rgh.needReference())
@@ -270,13 +393,29 @@ int main(int argc, char* argv[])
                         p_rgh = p - rho*gh;
                     }
                 }
+
+                const auto r = Foam::granair::OuterCorrectors::residual(U, U0, p, p0, alpha);
+                step = {corr, r.U, r.p, step.converged || outer.converged(corr, r)};
+                Info<< "outer corrector " << corr << (finalCorr ? " (final)" : "") << ": r_U " << r.U << " (at "
+                    << r.whereU << "), r_p " << r.p << " (at " << r.whereP << ")" << endl;
+                if (finalCorr) break;
+                finalCorr = step.converged;
+            }
+            mesh.data::remove("finalIteration");
+            if (!step.converged && outer.nOuter > 1)
+            {
+                Info<< "warning: not converged within " << outer.nOuter << " outer correctors (r_U "
+                    << step.residualU << ", r_p " << step.residualP << ", tolerance " << outer.tolerance << ")"
+                    << endl;
             }
 
-            balance.record(alpha, alphaPhi, air);
-            Info<< "powder: mass flow " << balance.lastMassFlow() << " kg/s, discharged " << balance.discharged()
+            balance.record(alpha, alphaPhi, air, p, step);
+            Info<< "continuity error cumulative " << cumulativeContErr << nl
+                << "powder: mass flow " << balance.lastMassFlow() << " kg/s, discharged " << balance.discharged()
                 << " kg, in domain " << balance.powderMass(alpha) << " kg, balance error "
                 << balance.relativeBalanceError(alpha) << ", alpha in [" << gMin(alpha.primitiveField()) << ", "
-                << gMax(alpha.primitiveField()) << "]" << endl;
+                << gMax(alpha.primitiveField()) << "], packed cells with p <= 0: " << balance.lastTensionFraction()
+                << endl;
             if (const auto* temperature = mixture.temperature())
             {
                 Info<< "granular temperature T in [" << gMin(temperature->T().primitiveField()) << ", "
@@ -288,6 +427,7 @@ int main(int argc, char* argv[])
             runTime.printExecutionTime(Info);
         }
 
+        balance.reportIterations();
         Info<< "powder mass conservation: initial " << balance.initialMass() << " kg, in domain "
             << balance.powderMass(alpha) << " kg, discharged " << balance.discharged() << " kg, relative error "
             << balance.relativeBalanceError(alpha) << nl << "End" << nl << endl;

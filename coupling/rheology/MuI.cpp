@@ -20,6 +20,7 @@ double barkerC(double mu, double nu) {
 }  // namespace
 
 MuI::MuI(const Parameters& p) : p_(p), i1_(NAN), logA_(NAN) {
+    if (std::isnan(p_.etaMin) && p_.rhoP > 0 && p_.d > 0) p_.etaMin = p_.rhoP * p_.d * std::sqrt(standardGravity * p_.d);
     auto check = [](bool good, const char* key, double v, const char* expected) {
         if (!good) failParameter(key, "rheology muI: ", key, " = ", v, ", expected ", expected);
     };
@@ -31,8 +32,9 @@ MuI::MuI(const Parameters& p) : p_(p), i1_(NAN), logA_(NAN) {
     check(p_.rhoP > 0 && std::isfinite(p_.rhoP), "rhoP", p_.rhoP, "a finite particle density > 0 [kg/m3]");
     check(p_.phiMax > 0 && p_.phiMax <= 1, "phiMax", p_.phiMax, "0 < phiMax <= 1");
     check(p_.phiMin > 0 && p_.phiMin <= p_.phiMax, "phiMin", p_.phiMin, "0 < phiMin <= phiMax");
-    check(p_.etaMax > 0 && std::isfinite(p_.etaMax), "etaMax", p_.etaMax, "a finite viscosity cap > 0 [Pa s]");
-    check(p_.pMin > 0 && std::isfinite(p_.pMin), "pMin", p_.pMin, "a finite pressure floor > 0 [Pa]");
+    check(p_.etaMin > 0 && std::isfinite(p_.etaMin), "etaMin", p_.etaMin, "a finite viscosity floor > 0 [Pa s]");
+    check(p_.etaMax > p_.etaMin && std::isfinite(p_.etaMax), "etaMax", p_.etaMax,
+          "a finite viscosity cap > etaMin [Pa s]");
     check(p_.gammaDotMin > 0 && std::isfinite(p_.gammaDotMin), "gammaDotMin", p_.gammaDotMin,
           "a finite shear-rate floor > 0 [1/s]");
     if (p_.regularisation != Regularisation::barkerGray2017) return;
@@ -75,7 +77,10 @@ std::unique_ptr<Rheology> MuI::fromDictionary(const Dictionary& dict) {
     p.phiMax = dict.getDouble("phiMax", p.phiMax);
     p.phiMin = dict.getDouble("phiMin", p.phiMin);
     p.etaMax = dict.getDouble("etaMax", p.etaMax);
-    p.pMin = dict.getDouble("pMin", p.pMin);
+    p.etaMin = dict.getDouble("etaMin", p.etaMin);
+    if (dict.has("pMin"))
+        fail<InputError>(dict.where("pMin"), ": the pressure floor pMin was removed: the powder carries no tension, ",
+                         "cells with p <= 0 are stress-free at etaMin (docs/continuum-model.md); delete the key");
     p.gammaDotMin = dict.getDouble("gammaDotMin", p.gammaDotMin);
     const std::string reg = dict.getString("regularisation", "none");
     if (reg == "barkerGray2017")
@@ -94,17 +99,16 @@ std::vector<RheologyQuantity> MuI::outputs() const {
 
 void MuI::checkState(double p, double gammaDot) const {
     if (!std::isfinite(p))
-        fail<InputError>("rheology muI: pressure ", p, " Pa, expected a finite number (values below pMin = ", p_.pMin,
-                         " Pa are floored)");
+        fail<InputError>("rheology muI: pressure ", p, " Pa, expected a finite number (p <= 0: stress-free)");
     if (!(std::isfinite(gammaDot) && gammaDot >= 0))
         fail<InputError>("rheology muI: shear rate ", gammaDot, " 1/s, expected a finite gammaDot >= 0");
 }
 
 double MuI::inertialNumber(double p, double gammaDot) const {
     checkState(p, gammaDot);
-    const double pEff = std::max(p, p_.pMin);
+    if (!(p > 0)) return std::numeric_limits<double>::infinity();  // no contact stress: the collisional limit
     const double gEff = std::max(gammaDot, p_.gammaDotMin);
-    return gEff * p_.d * std::sqrt(p_.rhoP / pEff);
+    return gEff * p_.d * std::sqrt(p_.rhoP / p);
 }
 
 double MuI::jopFriction(double I) const { return p_.muS + (p_.mu2 - p_.muS) * I / (p_.I0 + I); }
@@ -116,6 +120,10 @@ double MuI::jopFrictionDerivative(double I) const {
 
 double MuI::friction(double I) const {
     if (!(I >= 0)) fail<InputError>("rheology muI: inertial number ", I, ", expected I >= 0");
+    if (std::isinf(I))  // the limits of the two forms
+        return p_.regularisation == Regularisation::barkerGray2017 && p_.muInf > 0
+                   ? std::numeric_limits<double>::infinity()
+                   : p_.mu2;
     if (p_.regularisation == Regularisation::none) return jopFriction(I);
     if (I < i1_) return I > 0 ? std::sqrt(p_.alphaReg / (logA_ - std::log(I))) : 0.0;
     return (p_.muS * p_.I0 + p_.mu2 * I + p_.muInf * I * I) / (p_.I0 + I);
@@ -139,14 +147,16 @@ double MuI::illPosedness(double I) const {
 }
 
 double MuI::dilatancy(double I) const {
+    if (std::isinf(I)) return p_.phiMin;
     const double phi = p_.phiMax - (p_.phiMax - p_.phiMin) * I;
     return std::clamp(phi, p_.phiMin, p_.phiMax);
 }
 
 double MuI::viscosity(double p, double gammaDot) const {
     const double I = inertialNumber(p, gammaDot);  // checks the inputs
-    const double eta = friction(I) * std::max(p, p_.pMin) / std::max(gammaDot, p_.gammaDotMin);
-    return std::min(eta, p_.etaMax);
+    if (!(p > 0)) return p_.etaMin;                  // no tension: stress-free
+    const double eta = friction(I) * p / std::max(gammaDot, p_.gammaDotMin);
+    return std::clamp(eta, p_.etaMin, p_.etaMax);
 }
 
 double MuI::solidFraction(double p, double gammaDot) const { return dilatancy(inertialNumber(p, gammaDot)); }

@@ -1,6 +1,6 @@
 // MuI.hpp: rheology "muI", the local inertial-number (mu(I)) rheology of
-// dense granular flow, with viscosity cap, pressure floor and an optional
-// partial regularisation of its ill-posedness.
+// dense granular flow, tension-free, with a viscosity cap and floor and an
+// optional partial regularisation of its ill-posedness.
 //
 // Equations (GDR MiDi 2004; Jop, Forterre & Pouliquen 2006):
 //     I      = gammaDot d / sqrt(p / rho_p)                    inertial number [-]
@@ -12,14 +12,22 @@
 // yield criterion whose friction grows with I from mu_s (quasi-static) to
 // mu_2 (I -> infinity).
 //
-// Numerical limits (always on; they change the model only where it is singular):
-//     p_eff        = max(p, pMin)                 no zero/negative pressure (free surface, air)
-//     gammaDot_eff = max(gammaDot, gammaDotMin)   no division by zero at rest
-//     eta          = min(mu(I_eff) p_eff / gammaDot_eff, etaMax)
-// I, mu, eta and phi are all evaluated at (p_eff, gammaDot_eff). The cap turns
-// the rigid (unyielded) zones into a very viscous fluid that creeps at a rate
-// ~ mu p / etaMax; it bounds the stiffness of the momentum equation but does
-// NOT make the model well posed.
+// Limits (always on; they change the model only where it is singular):
+//     p <= 0:      no tension. The powder carries no stress there: eta = etaMin,
+//                  I = +infinity, phi = phi_min (Basilisk's granular.h does the
+//                  same; Staron, Lagree & Popinet 2012). There is no pressure
+//                  floor: a floor would give such cells a finite yield stress.
+//     p > 0:       eta = clamp(mu(I) p / gammaDot_eff, etaMin, etaMax),
+//                  gammaDot_eff = max(gammaDot, gammaDotMin) (no division by zero at rest)
+//     etaMin       = rho_p d sqrt(g d) by default (Lagree, Staron & Popinet 2011,
+//                  J. Fluid Mech. 686, 378, section 2.3.1): the viscosity of a
+//                  grain-scale collisional flow, so a stress-free or fast-sheared
+//                  cell is never inviscid (and the momentum equation never loses
+//                  its viscous part inside the powder).
+//     etaMax       the cap that turns rigid (unyielded) zones into a very viscous
+//                  fluid creeping at ~ mu p / etaMax; raise it until the result no
+//                  longer depends on it (cases/mcc-hopper README: the study).
+// I, mu and phi are evaluated at (p, gammaDot_eff).
 //
 // Ill-posedness and the optional regularisation. Barker et al. (2015) showed
 // that incompressible 2-D flow with this mu(I) is ill posed (short waves grow
@@ -44,7 +52,7 @@
 //     changes the physics at low I: mu(I) -> 0 (logarithmically) as I -> 0
 //     instead of mu_s (MCC: mu(1e-6) = 0.322 instead of 0.401), so static
 //     zones are weaker than the Coulomb limit; and mu -> mu_inf I instead of
-//     mu_2 at high I. The viscosity cap and floors still apply.
+//     mu_2 at high I. The limits above still apply.
 //
 // Validity: dense, dry, cohesionless grains of one size, I <~ 0.5 (beyond,
 // collisional flow); incompressible form (phi(I) is an output used for the
@@ -59,8 +67,9 @@
 //   rhoP         [kg/m3]   particle (material) density, > 0            (required)
 //   phiMax       [-]       solid fraction at I = 0, in (0, 1]          (default 0.632, MCC)
 //   phiMin       [-]       solid fraction at I >= 1, in (0, phiMax]    (default 0.443, MCC)
-//   etaMax       [Pa s]    viscosity cap, > 0                          (default 1e5)
-//   pMin         [Pa]      pressure floor, > 0                         (default 1)
+//   etaMax       [Pa s]    viscosity cap, > etaMin                     (default 1e5)
+//   etaMin       [Pa s]    viscosity floor, > 0               (default rho_p d sqrt(9.81 d))
+//   (pMin        removed: a case that still sets it is refused with the reason)
 //   gammaDotMin  [1/s]     shear-rate floor, > 0                       (default 1e-6)
 //   regularisation         none | barkerGray2017                       (default none)
 //   alphaReg     [-]       alpha of barkerGray2017, in (0, 2)          (default 1.9)
@@ -83,6 +92,7 @@
 //     Remmelgas, J. et al. (2019). mu(I) rheology of MCC spheres, hopper
 //     discharge with interFoam. Eur. J. Pharm. Sci. (case B of the reference cases).
 #pragma once
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -99,7 +109,8 @@ public:
     struct Parameters {
         double muS = 0, mu2 = 0, I0 = 0, d = 0, rhoP = 0;  // required
         double phiMax = 0.632, phiMin = 0.443;
-        double etaMax = 1e5, pMin = 1.0, gammaDotMin = 1e-6;
+        double etaMax = 1e5, gammaDotMin = 1e-6;
+        double etaMin = std::numeric_limits<double>::quiet_NaN();  // NaN: rho_p d sqrt(g d)
         Regularisation regularisation = Regularisation::none;
         double alphaReg = 1.9, muInf = 0.05;
     };
@@ -111,25 +122,28 @@ public:
 
     std::string name() const override { return typeName; }
     std::vector<std::string> inputs() const override { return {"p", "gammaDot"}; }
-    // I [-], mu [-], eta [Pa s], phi [-], all at (p_eff, gammaDot_eff).
+    // I [-], mu [-], eta [Pa s], phi [-], all at (p, gammaDot_eff); I = +inf where p <= 0.
     std::vector<RheologyQuantity> outputs() const override;
     std::vector<double> evaluate(const GranularState& s) const override;
 
     double viscosity(double p, double gammaDot) const override;
     double solidFraction(double p, double gammaDot) const override;
 
-    // Inertial number at the floored (p, gammaDot); inputs checked.
+    // Inertial number at (p, max(gammaDot, gammaDotMin)); +infinity for p <= 0; inputs checked.
     double inertialNumber(double p, double gammaDot) const override;
-    // mu(I) of the chosen form, I >= 0.
+    // mu(I) of the chosen form, I >= 0 (I = +infinity: its limit).
     double friction(double I) const;
     // d mu / d I of the chosen form, I > 0.
     double frictionDerivative(double I) const;
-    // phi(I), clamped to [phiMin, phiMax].
+    // phi(I), clamped to [phiMin, phiMax] (phiMin for I = +infinity).
     double dilatancy(double I) const;
     // Barker et al. (2015) C(I) of the chosen form: > 0 ill posed, < 0 well posed.
     double illPosedness(double I) const;
 
+    // The parameters, etaMin resolved to its value.
     const Parameters& parameters() const { return p_; }
+    // Standard gravity of the default etaMin = rho_p d sqrt(g d) [m/s2].
+    static constexpr double standardGravity = 9.81;
     // I1 and ln A of barkerGray2017 (NaN for none).
     double regularisationI1() const { return i1_; }
     double regularisationLogA() const { return logA_; }

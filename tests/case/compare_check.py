@@ -8,8 +8,10 @@ Checks (no simulation is run):
   (reference-demo/summary.csv) to its 5 printed digits; the Crewdson check of
   the air row is W_dry sqrt(1 + (dp/dz)/(rho_b g)) from those numbers;
   levels without results are listed (dem-cfd with its reason); both plots exist.
-- mcc-hopper: the continuum rows (no-slip and free-slip N = 20) carry the
-  steady rates of results/summary.txt and results/slip/summary.txt.
+- mcc-hopper: the continuum rows (Coulomb and free-slip walls) carry the
+  steady rates of results/summary.txt and results/slip/summary.txt, and the
+  Coulomb row carries the grid convergence index of its mesh study
+  (results/convergence/convergence.json) in compare.csv and compare.md.
 - bad input: a compare.json without `rho_b` and an unknown --run level stop
   with exit 2 and a message naming the file and key / the level.
 Usage: compare_check.py REPO_ROOT WORK_DIR
@@ -90,6 +92,14 @@ for sub in ("", "slip"):
              and close(float(x["steady_mass_flow_kg_s"]), w, 1e-4)]
     if not match:
         problems.append(f"mcc-hopper: no continuum row with W = {w} (results/{sub})")
+    elif sub == "":
+        study = json.load(open(os.path.join(root, "cases", "mcc-hopper", "results", "convergence",
+                                            "convergence.json")))
+        got = match[0].get("gci_fine", "")
+        if not got or not close(float(got), study["gci"]["gci_fine"], 1e-9):
+            problems.append(f"mcc-hopper: GCI {got!r} in compare.csv != {study['gci']['gci_fine']} of the study")
+        if "GCI_fine" not in open(os.path.join(out, "compare.md")).read():
+            problems.append("mcc-hopper: compare.md has no GCI line")
 
 # --- bad input
 bad = os.path.join(work, "bad-case")

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Bad input to granairContinuumFoam stops with the file and key (or patch,
 # field, model name) named, never a crash or a hang. Builds the coarsest valid
-# MCC hopper case (cases/mcc-hopper, N = 6, a few steps), then breaks it one
+# MCC hopper case (cases/mcc-hopper, N = 8, a few steps), then breaks it one
 # way at a time: WORK/<variant>.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -10,9 +10,9 @@ work=$1
 rm -rf "$work"; mkdir -p "$work"
 case_dir=$here/../../cases/mcc-hopper
 valid=$work/valid
-"$case_dir/Allrun" --setup-only --mesh 6 --end 1e-4 --out "$work/setup" > /dev/null
-mv "$work/setup/runs/N6" "$valid"
-(cd "$valid" && blockMesh >log.blockMesh 2>&1 && setAlphaField >log.setAlphaField 2>&1)
+"$case_dir/Allrun" --setup-only --mesh 8 --end 1e-4 --out "$work/setup" > /dev/null
+mv "$work/setup/runs/N8" "$valid"
+(cd "$valid" && blockMesh >log.blockMesh 2>&1 && setAlphaField >log.setAlphaField 2>&1 && setFields >log.setFields 2>&1)
 (cd "$valid" && granairContinuumFoam > log.ok 2>&1) || { echo "the valid case failed:"; tail "$valid/log.ok"; exit 1; }
 
 variant() { rm -rf "$work/$1"; cp -r "$valid" "$work/$1"; rm -rf "$work/$1/postProcessing"; echo "$work/$1"; }
@@ -47,6 +47,15 @@ check "$d" "granularProperties', key 'rheology.rhoP': missing" || fails=$((fails
 
 d=$(variant negative_cap); sed -i "s/^\( *etaMax *\)[^;]*;/\1-1;/" "$d/$props"
 check "$d" "granularProperties.*etaMax = -1" || fails=$((fails+1))
+
+d=$(variant removed_pressure_floor); sed -i "s/^\( *etaMax *[^;]*;\)/\1 pMin 1;/" "$d/$props"
+check "$d" "granularProperties', key 'rheology.pMin': the pressure floor pMin was removed" || fails=$((fails+1))
+
+d=$(variant bad_wall_friction); sed -i 's/frictionCoefficient 0.3;/frictionCoefficient -0.3;/' "$d/0/U"
+check "$d" "patch wall, field U: frictionCoefficient = -0.3, expected a wall friction coefficient" || fails=$((fails+1))
+
+d=$(variant simplec_key); sed -i 's/^\( *pressureCorrection .*\)$/    consistent yes;\n\1/' "$d/system/fvSolution"
+check "$d" "PIMPLE consistent: not used by granairContinuumFoam" || fails=$((fails+1))
 
 d=$(variant bad_outlet_patch); sed -i 's/^outletPatch .*/outletPatch     orifice;/' "$d/$props"
 check "$d" "key 'outletPatch': no boundary patch named 'orifice'" || fails=$((fails+1))

@@ -9,10 +9,12 @@
     series      time series: CSV in and out, window means, steady rates
     powder      the discharge of a silo or hopper: DEM and continuum runs to the level contract
     closed_forms  Beverloo, Hagen-Beverloo, Crewdson, Carleton
+    gci         Roache's grid convergence index of a result on three meshes
     levels      level.json, the contract of `./granair compare` (docs/fidelity-levels.md)
     checks      a case's --check: named assertions with tolerances and reasons
     plots       matplotlib (Agg) helpers: figures, Beverloo bands, field panels
     cli         the options every study takes (--out, --check, --np, --setup-only)
+    calibration the DEM-calibrated mu(I) of a case material in place of a literature block
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -24,4 +26,4 @@ class CaseError(Exception):
     file, the key or the command and what was expected."""
 
 
-from . import foam, template, runner, chunks, dem, series, powder, closed_forms, levels, checks, plots, cli  # noqa: E402,F401
+from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration  # noqa: E402,F401,E501

@@ -116,3 +116,39 @@ def checkmesh(log):
     if not cells:
         raise CaseError(f"{log}: no cell count (did checkMesh run?)")
     return int(cells.group(1)), float(nonorth.group(1)) if nonorth else float("nan")
+
+
+# The wall conditions of granairContinuumFoam's velocity (docs/continuum-model.md):
+# Coulomb wall friction (coulombWallSlip, CoulombWallSlipFvPatchVectorField.H), free slip, no-slip.
+WALLS = ("coulomb", "slip", "noSlip")
+
+
+def wall_velocity(walls, mu_w):
+    """The 0/U entry of a wall patch for `walls` (one of WALLS), mu_w the wall
+    friction coefficient of coulomb."""
+    if walls == "coulomb":
+        return f"type coulombWallSlip; frictionCoefficient {mu_w:.6g}; value uniform (0 0 0);"
+    if walls in WALLS:
+        return f"type {walls};"
+    raise CaseError(f"walls {walls!r}: expected one of {', '.join(WALLS)}")
+
+
+def line_profile(case, t, names, points, patch="frontAndBack"):
+    """Fields of a plane or wedge mesh (one cell thick; `patch` its empty or wedge side)
+    at time t, interpolated linearly between cell centres (the mean of each cell's
+    vertices on `patch`) to points [(x, z), ...]: {name: values} (a vector field gives
+    its x and z components as name_x, name_z). NaN outside the mesh's centres."""
+    from matplotlib.tri import LinearTriInterpolator, Triangulation
+    d = time_dir(case, t)
+    if d is None:
+        raise CaseError(f"{case}: no time folder {t:g} (written: {[tt for tt, _ in time_dirs(case)]})")
+    centres = np.array([poly.mean(axis=0) for poly in plane_cells(case, patch)])
+    tri = Triangulation(centres[:, 0], centres[:, 1])
+    pts = np.asarray(points, dtype=float)
+    out = {}
+    for name in names:
+        f = read_field(os.path.join(d, name), len(centres))
+        comps = {name: f} if f.ndim == 1 else {name + "_x": f[:, 0], name + "_z": f[:, 2]}
+        for key, v in comps.items():
+            out[key] = np.ma.filled(LinearTriInterpolator(tri, v)(pts[:, 0], pts[:, 1]).astype(float), np.nan)
+    return out

@@ -10,7 +10,15 @@ import math
 
 # MCC spheres (Remmelgas et al. 2019) and the numerical limits
 MCC = dict(muS=0.401, mu2=0.908, I0=0.0465, d=660e-6, rhoP=1500.0, phiMax=0.632, phiMin=0.443,
-           etaMax=1e5, pMin=1.0, gammaDotMin=1e-6)
+           etaMax=1e5, gammaDotMin=1e-6)
+G = 9.81  # standard gravity of the default viscosity floor
+
+
+def eta_min(q):
+    """Viscosity floor rho_p d sqrt(g d) (Lagree, Staron & Popinet 2011, section 2.3.1)."""
+    return q.get("etaMin", q["rhoP"] * q["d"] * math.sqrt(G * q["d"]))
+
+
 BG = dict(alphaReg=1.9, muInf=0.05)
 
 
@@ -57,25 +65,26 @@ def mu_barker_gray(I, q, i1):
 def mu_i(p, gd, q, regularised):
     """(I, mu, eta, phi) at pressure p [Pa] and shear rate gd [1/s]."""
     notes = []
-    p_eff = p
-    if p < q["pMin"]:
-        p_eff = q["pMin"]
-        notes.append("p floored")
+    if p <= 0:
+        raise ValueError("p <= 0 (stress-free, I infinite) is tested in test_rheology_limits.cpp, not here")
     gd_eff = gd
     if gd < q["gammaDotMin"]:
         gd_eff = q["gammaDotMin"]
         notes.append("gammaDot floored")
-    I = gd_eff * q["d"] / math.sqrt(p_eff / q["rhoP"])
+    I = gd_eff * q["d"] / math.sqrt(p / q["rhoP"])
     if regularised:
         i1 = barker_gray_i1(q)
         mu = mu_barker_gray(I, q, i1)
         notes.append("low-I branch" if I < i1 else "high-I branch")
     else:
         mu = mu_jop(I, q)
-    eta = mu * p_eff / gd_eff
+    eta = mu * p / gd_eff
     if eta > q["etaMax"]:
         eta = q["etaMax"]
         notes.append("eta capped")
+    if eta < eta_min(q):
+        eta = eta_min(q)
+        notes.append("eta at the floor etaMin")
     phi = q["phiMax"] - (q["phiMax"] - q["phiMin"]) * I
     if phi < q["phiMin"]:
         phi = q["phiMin"]
@@ -87,7 +96,7 @@ MUI_POINTS = [  # (p [Pa], gammaDot [1/s])
     (1000.0, 10.0), (500.0, 1.0), (100.0, 50.0), (2000.0, 0.5), (50.0, 0.01),
     (5.0, 200.0),      # I > 1: phi clamped to phiMin
     (1300.0, 1e-3),    # quasi-static: eta capped
-    (0.2, 5.0), (-40.0, 5.0),  # below pMin: floored
+    (0.2, 5.0), (40.0, 60.0),  # near the free surface: eta at the floor rho_p d sqrt(g d)
     (800.0, 0.0),      # at rest: gammaDot floored, eta capped
 ]
 BG_POINTS = [

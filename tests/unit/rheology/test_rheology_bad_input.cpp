@@ -62,12 +62,15 @@ TEST_CASE("rheologies: bad input", "[rheology][input]") {
         CHECK_THROWS_WITH(create("type muI; muS 0.5; mu2 0.4; I0 0.05; d 1e-3; rhoP 1500;"),
                           StartsWith("file 'constant/granularProperties', key 'mu2': rheology muI: mu2 = 0.4") &&
                               Contains("mu_2 > mu_s"));
-        const auto nested = Dictionary::fromString("rheology { " + mcc + " pMin 0; }", "constant/granularProperties");
+        const auto nested = Dictionary::fromString("rheology { " + mcc + " gammaDotMin 0; }", "constant/granularProperties");
         CHECK_THROWS_WITH(granair::rheologies().create(nested.subDict("rheology")),
-                          StartsWith("file 'constant/granularProperties', key 'rheology.pMin': ") &&
-                              Contains("pMin = 0"));
+                          StartsWith("file 'constant/granularProperties', key 'rheology.gammaDotMin': ") &&
+                              Contains("gammaDotMin = 0"));
         CHECK_THROWS_WITH(create(mcc + "etaMax -3;"), Contains("etaMax = -3"));
-        CHECK_THROWS_WITH(create(mcc + "pMin 0;"), Contains("pMin = 0"));
+        CHECK_THROWS_WITH(create(mcc + "pMin 1;"), Contains("constant/granularProperties") && Contains("pMin") &&
+                                                       Contains("removed") && Contains("no tension"));
+        CHECK_THROWS_WITH(create(mcc + "etaMin 0;"), Contains("etaMin = 0"));
+        CHECK_THROWS_WITH(create(mcc + "etaMin 2e5;"), Contains("etaMax = 100000") && Contains("> etaMin"));
         CHECK_THROWS_WITH(create(mcc + "gammaDotMin 0;"), Contains("gammaDotMin = 0"));
         CHECK_THROWS_WITH(create(mcc + "phiMin 0.7;"), Contains("phiMin = 0.7"));
         // (a key given twice is an error of its own: d replaced, not repeated)

@@ -19,7 +19,7 @@ namespace {
 // MCC spheres (Remmelgas et al. 2019) with explicit numerical limits.
 const std::string mcc =
     "type muI; muS 0.401; mu2 0.908; I0 0.0465; d 660e-6; rhoP 1500;"
-    "etaMax 1e5; pMin 1; gammaDotMin 1e-6;";
+    "etaMax 1e5; gammaDotMin 1e-6;";
 
 std::unique_ptr<granair::Rheology> create(const std::string& text) {
     return granair::rheologies().create(Dictionary::fromString(text, "test"));
@@ -60,18 +60,47 @@ TEST_CASE("rheology muI: limits", "[rheology][muI]") {
             }
     }
 
-    SECTION("the viscosity cap and the pressure and shear-rate floors are active where documented") {
+    SECTION("the viscosity cap, the viscosity floor and the shear-rate floor are active where documented") {
         // 0.401 * 1000 / 1e-3 = 4e5 Pa s > etaMax.
         CHECK(m.viscosity(1000.0, 1e-3) == 1e5);
         CHECK(m.viscosity(1000.0, 1.0) < 1e5);
-        // p below pMin behaves as pMin, including negative p (suction in the mixture).
-        CHECK(m.viscosity(0.3, 2.0) == m.viscosity(1.0, 2.0));
-        CHECK(m.viscosity(-250.0, 2.0) == m.viscosity(1.0, 2.0));
-        CHECK(m.inertialNumber(-250.0, 2.0) == m.inertialNumber(1.0, 2.0));
-        CHECK(m.viscosity(1.5, 2.0) != m.viscosity(1.0, 2.0));
+        // Default floor rho_p d sqrt(g d) = 1500 * 660e-6 * sqrt(9.81 * 660e-6) = 0.07966 Pa s.
+        const double etaMin = 1500.0 * 660e-6 * std::sqrt(9.81 * 660e-6);
+        CHECK(m.parameters().etaMin == Approx(etaMin).epsilon(1e-15));
+        CHECK(etaMin == Approx(0.0796602).epsilon(1e-6));
+        // Near the free surface (small p, fast shear) mu p/gammaDot falls below it.
+        CHECK(m.viscosity(0.2, 5.0) == etaMin);
+        CHECK(m.viscosity(5.0, 200.0) == etaMin);
+        CHECK(m.viscosity(40.0, 60.0) > etaMin);
         // gammaDot = 0 behaves as gammaDotMin: finite I, capped viscosity.
         CHECK(m.inertialNumber(800.0, 0.0) == m.inertialNumber(800.0, 1e-6));
         CHECK(m.viscosity(800.0, 0.0) == 1e5);
+        // An explicit floor replaces the default.
+        const auto r2 = create(mcc + "etaMin 0.5;");
+        CHECK(asMuI(r2).viscosity(0.2, 5.0) == 0.5);
+    }
+
+    SECTION("no tension: p <= 0 is stress-free at etaMin, with no pressure floor") {
+        const double etaMin = m.parameters().etaMin;
+        for (double p : {0.0, -1e-9, -250.0, -7e3}) {
+            INFO("p = " << p);
+            CHECK(m.viscosity(p, 2.0) == etaMin);
+            CHECK(m.viscosity(p, 0.0) == etaMin);  // not the cap: no contact stress at rest either
+            CHECK(std::isinf(m.inertialNumber(p, 2.0)));
+            CHECK(m.solidFraction(p, 2.0) == 0.443);
+        }
+        CHECK(m.friction(INFINITY) == 0.908);
+        // A small positive pressure is not floored: the Coulomb stress mu p follows p down to zero.
+        CHECK(m.viscosity(1e-3, 1e-6) * 1e-6 == Approx(m.friction(m.inertialNumber(1e-3, 1e-6)) * 1e-3).epsilon(1e-14));
+        // Every output of evaluate() is defined (I infinite, the others finite).
+        granair::GranularState s;
+        s.p = -10.0;
+        s.gammaDot = 3.0;
+        const auto v = r->evaluate(s);
+        CHECK(std::isinf(v[0]));
+        CHECK(v[1] == 0.908);
+        CHECK(v[2] == etaMin);
+        CHECK(v[3] == 0.443);
     }
 
     SECTION("dilatancy phi(I) is linear and clamped to [phi_min, phi_max]") {

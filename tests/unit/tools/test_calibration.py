@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""gc.calibration (tools/granair_cases/calibration.py): the material entries of a
+hand-made muI block are replaced by the committed calibration
+(cases/rheology-calibration/results/calibration.json), the numerics kept, d
+overridden on request; a block without an entry, a non-muI block and an
+unknown material stop with the file and the key named."""
+import json
+import sys
+
+import granair_cases as gc
+from granair_cases import calibration
+
+failures = []
+LITERATURE = """// literature header
+rheology
+{
+    type        muI;
+    muS         0.401;
+    mu2         0.908;
+    I0          0.0465;
+    d           660e-6;
+    rhoP        1500;
+    phiMax      0.632;
+    phiMin      0.443;
+    etaMax      1e5;
+    regularisation barkerGray2017;
+}
+"""
+
+
+def entry(text, key):
+    line = next(l for l in text.splitlines() if l.strip().startswith(key + " "))
+    return float(line.split()[1].rstrip(";"))
+
+
+with open(calibration.RESULTS) as fh:
+    fit = json.load(fh)["mcc-hopper"]
+out = calibration.block(LITERATURE, "mcc-hopper")
+for key, name in calibration.KEYS.items():
+    if abs(entry(out, key) - fit["fit"][name]) > 1e-5 * abs(fit["fit"][name]):
+        failures.append(f"{key}: {entry(out, key)} vs calibration {fit['fit'][name]}")
+for key, want in (("d", fit["d_parcel_m"]), ("rhoP", fit["rho_p"]), ("etaMax", 1e5)):
+    if abs(entry(out, key) - want) > 1e-5 * want:
+        failures.append(f"{key}: {entry(out, key)} vs {want}")
+if "literature header" in out or "barkerGray2017" not in out:
+    failures.append("the literature header comment should go, the numerics stay")
+if abs(entry(calibration.block(LITERATURE, "mcc-hopper", d=2e-3), "d") - 2e-3) > 1e-12:
+    failures.append("d override not applied")
+for text, material, want in ((LITERATURE.replace("    phiMin      0.443;\n", ""), "mcc-hopper", "phiMin"),
+                             (LITERATURE.replace("muI", "latzSchmidt"), "mcc-hopper", "type muI"),
+                             (LITERATURE, "no-such-material", "no-such-material")):
+    try:
+        calibration.block(text, material, where="test block")
+        failures.append(f"no error for a block without {want}")
+    except gc.CaseError as e:
+        if want not in str(e):
+            failures.append(f"error does not name {want}: {e}")
+
+print("\n".join(failures) or "calibration: all checks passed")
+sys.exit(1 if failures else 0)

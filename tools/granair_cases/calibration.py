@@ -1,0 +1,63 @@
+"""The DEM-calibrated mu(I) of a case's DEM material (cases/rheology-calibration).
+
+A continuum run that is compared with the DEM of the same material takes the
+material entries of the calibration (mu_s, mu_2, I0, d, rho_p, phi_max,
+phi_min; results/calibration.json) in place of those of the case's
+literature block, and keeps the block's numerics (cap, floors,
+regularisation): the solver's dictionary reader has no #include, so the
+entries are replaced in the text.
+
+    fit(material) -> dict (mu_s, mu_2, I0, phi_max, phi_min, d, rho_p, ses, source)
+    block(literature_text, material, d=None, where) -> rheology block text
+"""
+import json
+import os
+import re
+
+from . import CaseError
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "cases", "rheology-calibration")
+RESULTS = os.path.normpath(os.path.join(ROOT, "results", "calibration.json"))
+# rheology key of the block -> key of the fit in calibration.json
+KEYS = {"muS": "mu_s", "mu2": "mu_2", "I0": "I0", "phiMax": "phi_max", "phiMin": "phi_min"}
+
+
+def fit(material, path=RESULTS):
+    """The P = 500 Pa fit of `material` (a key of calibration.json: 'wedge-silo', 'mcc-hopper')."""
+    try:
+        with open(path) as fh:
+            data = json.load(fh)
+    except (OSError, ValueError) as e:
+        raise CaseError(f"{path}: cannot read the calibration ({e})")
+    if material not in data:
+        raise CaseError(f"{path}: no material '{material}' (has: {', '.join(sorted(data))})")
+    m = data[material]
+    try:
+        f = m["fit"]
+        out = {k: float(f[k]) for k in KEYS.values()}
+        out.update(d=float(m["d_parcel_m"]), rho_p=float(m["rho_p"]), material=m["material"],
+                   se={k: float(f[k + "_se"]) for k in KEYS.values()}, source=os.path.relpath(path, os.path.join(ROOT, "..", "..")))
+    except (KeyError, TypeError, ValueError) as e:
+        raise CaseError(f"{path}: material '{material}': missing or bad entry {e}")
+    return out
+
+
+def block(text, material, d=None, where="rheology block"):
+    """`text` (a filled muI rheology block) with its material entries replaced by the
+    calibration of `material`; d [m] overrides the calibration's parcel diameter (the
+    dimensionless law for another parcel size). Every entry must be in `text` once."""
+    f = fit(material)
+    values = {k: f[v] for k, v in KEYS.items()}
+    values.update(d=f["d"] if d is None else d, rhoP=f["rho_p"])
+    if not re.search(r"^\s*type\s+muI\s*;", text, re.M):
+        raise CaseError(f"{where}: the calibration replaces a muI block ('type muI;' not found)")
+    for key, value in values.items():
+        note = "DEM parcel diameter of the calibration" if key == "d" and d is None else (
+            "set by the run (the calibrated law at this parcel size)" if key == "d" else f"DEM calibration, {f['source']}")
+        text, n = re.subn(r"^(\s*)" + re.escape(key) + r"\s+[^;\n]*;.*$",
+                          lambda m: f"{m.group(1)}{key:<11} {value:.6g};   // {note}", text, count=1, flags=re.M)
+        if n != 1:
+            raise CaseError(f"{where}: no entry '{key}' to replace with the calibration")
+    start = re.search(r"^\s*rheology\b", text, re.M)     # the literature block's own header comment goes
+    text = text[start.start():] if start else text
+    return f"// mu(I) of {f['material']}: cases/rheology-calibration (DEM shear cell, P = 500 Pa)\n" + text
