@@ -59,11 +59,11 @@ BEVERLOO_C, K_RANGE = 0.58, (1.0, 3.0)     # Hagen-Beverloo slot band (closed_fo
 # fill, discharge time before the CG chunk (which adds 95 ms), the start of
 # the steady windows, restart chunk length, default geometries.
 SIZES = {
-    "test": dict(width=0.100, height=0.040, settle=0.25, t_discharge=0.20, steady_from=0.10, chunk=0.20, cg=True,
+    "test": dict(width=0.100, height=0.040, settle=0.25, t_discharge=0.25, steady_from=0.10, chunk=0.125, cg=True,
                  geometries=[32], friction=["low"]),
-    "demo": dict(width=0.100, height=0.050, settle=0.30, t_discharge=0.30, steady_from=0.10, chunk=0.30, cg=True,
+    "demo": dict(width=0.100, height=0.050, settle=0.30, t_discharge=0.25, steady_from=0.10, chunk=0.25, cg=True,
                  geometries=[SINGLE, 0, 8, 32], friction=["low", "high"]),
-    "study": dict(width=0.100, height=0.120, settle=0.50, t_discharge=1.40, steady_from=0.30, chunk=0.35, cg=True,
+    "study": dict(width=0.100, height=0.060, settle=0.30, t_discharge=0.42, steady_from=0.10, chunk=0.21, cg=True,
                   geometries=[SINGLE] + list(L_SWEEP_MM), friction=["low", "high"]),
 }
 

@@ -36,6 +36,27 @@ def chunk_states(run, k):
     return found["start"], found["end"]
 
 
+def pending(run, k):
+    """IDs of the particles the sink had counted but not yet deleted when chunk
+    k ended (template/dem/in.chunk deletes them before its restart)."""
+    path = os.path.join(run, "dem", f"pending_{k}.txt")
+    if not os.path.exists(path):
+        raise gc.CaseError(f"{path}: missing (did chunk {k} finish? runs set up before the pending deletions "
+                           f"must be run again)")
+    with open(path) as fh:
+        lines = fh.read().split("ITEM: ATOMS")
+    if len(lines) != 2:
+        raise gc.CaseError(f"{path}: not a LIGGGHTS dump (expected one 'ITEM: ATOMS' section)")
+    rows = [ln.split() for ln in lines[1].splitlines()[1:] if ln.strip()]
+    return [int(r[0]) for r in rows]
+
+
+def lost_warnings(run, k):
+    """LIGGGHTS' "Lost atoms" warnings on chunk k's screen (template/dem/in.chunk)."""
+    with open(os.path.join(run, "log", f"chunk_{k}.screen"), errors="replace") as fh:
+        return fh.read().count("WARNING: Lost atoms")
+
+
 def fill_count(fill):
     path = os.path.join(fill, "log", "fill.liggghts")
     with open(path) as fh:
@@ -45,14 +66,16 @@ def fill_count(fill):
     return int(m.group(1)), int(m.group(2))
 
 
-def events(run, stem):
-    """(id, t, d) of every particle massflow/mesh wrote to dem/<stem>_<k>.txt."""
+def events(run, stem, with_x=False):
+    """(id, t, d) of every particle massflow/mesh wrote to dem/<stem>_<k>.txt
+    (and x, where it crossed, with_x)."""
     rows = []
     for p in sorted(glob.glob(os.path.join(run, "dem", f"{stem}_*.txt"))):
         with open(p) as fh:
-            rows += [line.split()[:3] for line in fh if line.strip() and not line.startswith("#")]
-    a = np.array(rows, dtype=float).reshape(-1, 3)
-    return a[:, 0].astype(int), a[:, 1], a[:, 2]
+            rows += [line.split()[:4] for line in fh if line.strip() and not line.startswith("#")]
+    a = np.array(rows, dtype=float).reshape(-1, 4)
+    out = (a[:, 0].astype(int), a[:, 1], a[:, 2])
+    return out + (a[:, 3],) if with_x else out
 
 
 def accounting(v, run, fill):
@@ -61,9 +84,11 @@ def accounting(v, run, fill):
     atom count follows feed and sink exactly."""
     n_fill, n_req = fill_count(fill)
     feed = outlet = sink = 0
-    chunk_ok, atoms_prev = True, n_fill
+    chunk_ok, atoms_prev, pend, lost = True, n_fill, [], 0
     for k, _, _ in silo.chunks(v):
         s, e = chunk_states(run, k)
+        pend += pending(run, k)
+        lost += lost_warnings(run, k)
         df, do, ds = e["feed"] - s["feed"], e["outlet"] - s["outlet"], e["sink"] - s["sink"]
         chunk_ok &= s["atoms"] == atoms_prev and e["atoms"] == s["atoms"] + df - ds
         feed, outlet, sink, atoms_prev = feed + df, outlet + do, sink + ds, e["atoms"]
@@ -71,28 +96,44 @@ def accounting(v, run, fill):
     below = e["atoms"] - in_silo
     ids, _, _ = events(run, "crossings")
     rid, _, _ = events(run, "removed")
+    pend_ok = bool(set(pend) <= set(rid.tolist()))
     return dict(fill=n_fill, fill_requested=n_req, fed=feed, inserted=n_fill + feed, in_silo=in_silo,
                 below_outlet=below, removed=sink, discharged=outlet, crossing_records=int(ids.size),
                 crossing_ids_unique=int(np.unique(ids).size), removed_records=int(rid.size),
-                chunks_consistent=bool(chunk_ok), t_end=e["t"],
+                chunks_consistent=bool(chunk_ok), pending_deleted=len(pend), pending_all_removed=pend_ok, lost_atom_warnings=lost,
+                t_end=e["t"],
                 closes=bool(n_fill + feed == in_silo + below + sink and outlet == below + sink and chunk_ok
-                            and ids.size == outlet and rid.size == sink))
+                            and ids.size == outlet and rid.size == sink and pend_ok))
 
 
 # --- flow rate -------------------------------------------------------------------
-def flow(v, run, t_end):
+def window_rates(t, m, t0, t_end):
+    """Mass flow [kg/s] in each whole 200 ms window from t0."""
+    n = int((t_end - t0) / P.WINDOW + 1e-9)
+    return np.array([m[(t >= t0 + k * P.WINDOW) & (t < t0 + (k + 1) * P.WINDOW)].sum() / P.WINDOW
+                     for k in range(n)])
+
+
+def mean_sd(rates):
+    return (float(rates.mean()) if rates.size else math.nan,
+            float(rates.std(ddof=1)) if rates.size > 1 else math.nan)
+
+
+def flow(v, L, run, t_end):
     """Mass flow through the outlet plane: 200 ms windows from the steady start
-    (mean, SD over windows) and a 20 ms series for the figures."""
-    _, t, d = events(run, "crossings")
+    (mean, SD over windows), per opening (the crossings left and right of the
+    axis; one opening for the single slot), and a 20 ms series for the figures."""
+    _, t, d, x = events(run, "crossings", with_x=True)
     m = P.RHO_P * math.pi / 6 * d ** 3
     t0 = v["STEADY_FROM"]
-    n = int((t_end - t0) / P.WINDOW + 1e-9)
-    rates = np.array([m[(t >= t0 + k * P.WINDOW) & (t < t0 + (k + 1) * P.WINDOW)].sum() / P.WINDOW
-                      for k in range(n)])
+    rates = window_rates(t, m, t0, t_end)
+    mean, sd = mean_sd(rates)
+    sides = [np.ones_like(x, bool)] if L == P.SINGLE else [x < 0, x >= 0]
+    per = [mean_sd(window_rates(t[s], m[s], t0, t_end)) for s in sides]
     edges = np.arange(0.0, t_end + 1e-9, 0.02)
     series = np.histogram(t, edges, weights=m)[0] / 0.02
-    return dict(windows=rates.tolist(), window_start=t0, mean=float(rates.mean()) if n else math.nan,
-                sd=float(rates.std(ddof=1)) if n > 1 else math.nan, n_windows=n,
+    return dict(windows=rates.tolist(), window_start=t0, mean=mean, sd=sd, n_windows=int(rates.size),
+                per_opening_mean=[p[0] for p in per], per_opening_sd=[p[1] for p in per],
                 discharged_kg=float(m.sum())), (0.5 * (edges[1:] + edges[:-1]), series)
 
 
@@ -139,7 +180,12 @@ def cg_fields(v, L, run):
         r2.append({k: float(np.nanmean(a[sel])) for k, a in (("shear_rate", gd), ("pressure", p),
                    ("inertial_number", i_paper), ("volume_fraction", phi), ("viscosity", eta),
                    ("shear_rate_granairCG", g), ("inertial_number_granairCG", i_num))})
-    r1 = (z >= 0) & (z <= P.R1_HEIGHT) & np.isfinite(i_paper) & (i_paper > P.I_FIT_MIN)
+    # R1 for phi(I): 0-5 cm above the floor, less one kernel cutoff at the side
+    # walls and below the fill height (there the kernel reaches past the
+    # particles and phi drops for a reason that is not I)
+    cut = P.CG_CUTOFF * P.CG_WIDTH_OVER_D * P.D_MEAN
+    r1 = ((z >= 0) & (z <= min(P.R1_HEIGHT, v["HEIGHT"] - cut)) & (np.abs(x) <= v["WIDTH"] / 2 - cut)
+          & np.isfinite(i_paper) & (i_paper > P.I_FIT_MIN))
     keep = ["x", "z", "velocity_x", "velocity_z", "volume_fraction", "pressure", "shear_stress"]
     cols = [(k, f[k]) for k in keep] + [("shear_rate", gd), ("inertial_number", i_paper), ("viscosity", eta)]
     # the mass check: one snapshot on a grid that holds every kernel
@@ -169,7 +215,7 @@ def run(v, L, run_dir, fill, out):
         with open(js) as fh:
             return json.load(fh)
     acc = accounting(v, run_dir, fill)
-    q, (tc, series) = flow(v, run_dir, acc["t_end"])
+    q, (tc, series) = flow(v, L, run_dir, acc["t_end"])
     gc.series.write_csv(os.path.join(out, f"{name}_flow.csv"), [("t", tc), ("mass_flow_kg_s", series)], fmt="{:.6g}")
     r = dict(friction=v["FRICTION"], geometry=name, L_mm=None if L == P.SINGLE else L, size=v["SIZE"],
              openings_m=P.openings(L), accounting=acc, flow=q,
@@ -210,12 +256,26 @@ def load(out, f, L):
 
 
 def fit_phi_I(pts):
-    """phi = a1 / (1 + a2 I) by least squares on 1/phi = 1/a1 + (a2/a1) I."""
+    """phi = a1 / (1 + a2 I), least squares in phi (not in 1/phi, which the
+    loose points near the openings would dominate): for a given a2 the best
+    a1 is linear, a2 by a golden-section search over [0, 50]."""
     if len(pts) < 3:
         return math.nan, math.nan
     i, phi = np.asarray(pts).T
-    b, a = np.polyfit(i, 1 / phi, 1)
-    return 1 / a, b / a
+
+    def best(a2):
+        u = 1 / (1 + a2 * i)
+        a1 = float(np.dot(phi, u) / np.dot(u, u))
+        return float(np.sum((phi - a1 * u) ** 2)), a1
+    lo, hi, g = 0.0, 50.0, (math.sqrt(5) - 1) / 2
+    for _ in range(80):
+        m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        if best(m1)[0] < best(m2)[0]:
+            hi = m2
+        else:
+            lo = m1
+    a2 = 0.5 * (lo + hi)
+    return best(a2)[1], a2
 
 
 def study(a, runs, geoms, c):
@@ -257,7 +317,7 @@ def ratio(x, y):
 
 def table(a, res, rho_b):
     head = ["friction", "geometry", "L_mm", "L_over_d", "particles", "windows", "flow_kg_s", "flow_sd_kg_s",
-            "flow_over_L0", "flow_over_single", "R2_shear_rate_1_s", "R2_pressure_Pa", "R2_inertial_number",
+            "flow_over_L0", "flow_over_single", "per_opening_kg_s", "interaction", "R2_shear_rate_1_s", "R2_pressure_Pa", "R2_inertial_number",
             "R2_volume_fraction", "R2_viscosity_Pa_s", "cpu_s", "accounting_closes"]
     rows = []
     for (f, L), r in sorted(res.items(), key=lambda t: (t[0][0], priority(t[0][1]))):
@@ -269,11 +329,13 @@ def table(a, res, rho_b):
                 for k in ("shear_rate", "pressure", "inertial_number", "volume_fraction", "viscosity")}
         rows.append([f, r["geometry"], "" if L == P.SINGLE else L, "" if L == P.SINGLE else f"{L * 1e-3 / P.D_MEAN:.3g}",
                      r["particles_fill"], q["n_windows"], f"{q['mean']:.5g}", f"{q['sd']:.3g}", f"{ratio(q['mean'], q0):.4g}",
-                     f"{ratio(q['mean'], q1):.4g}", *(f"{mean[k]:.4g}" for k in mean), r["cost"]["total_cpu_s"],
+                     f"{ratio(q['mean'], q1):.4g}", " / ".join(f"{x:.5g}" for x in q.get("per_opening_mean", [])),
+                     f"{ratio(q['mean'], (1 if L == P.SINGLE else 2) * q1):.4g}", *(f"{mean[k]:.4g}" for k in mean), r["cost"]["total_cpu_s"],
                      int(r["accounting"]["closes"])])
     gc.series.write_rows(os.path.join(a.out, "flow_rate.csv"), [dict(zip(head, row)) for row in rows])
     with open(os.path.join(a.out, "summary.txt"), "w") as fh:
-        fh.write(f"# two-slot silo, size {a.size}: flow rate in {P.WINDOW * 1e3:.0f} ms windows (mean, SD), R2 "
+        fh.write(f"# two-slot silo, size {a.size}: flow rate in {P.WINDOW * 1e3:.0f} ms windows (mean, SD), per "
+                 f"opening (left / right), interaction = total / (number of openings x the single 14 mm rate), R2 "
                  f"averages, CPU seconds per run (fill not included)\n")
         for f in sorted(rho_b):
             lo, hi = hagen_beverloo(P.D0, rho_b[f])
@@ -371,13 +433,16 @@ def plot_phi_I(a, res):
         ii = np.linspace(P.I_FIT_MIN, max(i), 50)
         ax.plot(ii, a1 / (1 + a2 * ii), color=COLOURS[f], label=f"{f}: a1 = {a1:.3f}, a2 = {a2:.3f} ({len(pts)} points)")
         lines.append((f, a1, a2, len(pts)))
-    ax.set(xlabel="I", ylabel="phi", title="phi against I over R1 (I > 0.05), fit phi = a1 / (1 + a2 I)")
+    ax.set(xlabel="I", ylabel="phi", title="phi against I over R1 (I > 0.05; not within 3w of the side walls), "
+                                           "fit phi = a1 / (1 + a2 I)")
+    ax.title.set_fontsize(9)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(a.out, "phi_I.png"), dpi=110)
     with open(os.path.join(a.out, "phi_I_fit.txt"), "w") as fh:
-        fh.write("# phi = a1 / (1 + a2 I) over R1 (0-5 cm above the floor) for I > 0.05, every run of the set\n")
+        fh.write("# phi = a1 / (1 + a2 I), least squares in phi, over R1 (0-5 cm above the floor, not within one "
+                 "kernel cutoff of the side walls) for I > 0.05, every run of the set\n")
         for f, a1, a2, n in lines:
             fh.write(f"{f}: a1 = {a1:.5g}, a2 = {a2:.5g}, points = {n}\n")
 
@@ -449,7 +514,11 @@ def checks(a, res, rho_b, c):
         c.exact(f"{n}: crossing records = crossings, removal records = removals",
                 (acc["crossing_records"], acc["removed_records"]), (acc["discharged"], acc["removed"]), "one line each")
         c.true(f"{n}: every chunk's atom count = start + fed - removed", acc["chunks_consistent"],
-               f"{len(r['cost']) - 1} chunks", "integer counts")
+               f"{len(r['cost'])} chunks, {acc['lost_atom_warnings']} LIGGGHTS 'Lost atoms' warnings",
+               "integer counts (LIGGGHTS 3.8 warns with equal counts after a restart: template/dem/in.chunk)")
+        c.true(f"{n}: the particles deleted at chunk ends (counted by the sink, not yet deleted) are all "
+               f"among the sink's records", acc["pending_all_removed"], f"{acc['pending_deleted']} particles",
+               "massflow/mesh deletes at the next neighbour-list build")
         if f in rho_b and L in (P.SINGLE, 0, 32):
             # one slot of 14 or 28 mm; at L = 32 mm (15 d) two 14 mm slots, each its own band
             lo, hi = hagen_beverloo(2 * P.D0 if L == 0 else P.D0, rho_b[f])

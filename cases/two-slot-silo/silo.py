@@ -49,7 +49,8 @@ def numbers(size, friction):
     snap_steps = per_snapshot
     return dict(
         SIZE=size, FRICTION=friction, WIDTH=width, HEIGHT=height, DEPTH=P.DEPTH, N_FILL=n_fill,
-        XLO=-width / 2, XHI=width / 2, ZLO=P.SINK_Z - 0.005, ZHI=z_top,
+        XLO=-width / 2, XHI=width / 2, ZLO=P.SINK_Z - 0.005, ZHI=z_top, SINK_Z=P.SINK_Z,
+        XLO_OUT=-width / 2 - 0.01, XHI_OUT=width / 2 + 0.01, YHI_OUT=P.DEPTH + 0.01, ZLO_OUT=P.SINK_Z - 0.05,
         XLO_IN=-width / 2 + r_max, XHI_IN=width / 2 - r_max, YLO_IN=r_max, YHI_IN=P.DEPTH - r_max,
         ZFILL_LO=r_max, ZFILL_HI=fill_top, ZFEED_LO=height, ZFEED_HI=height + P.FEED_HEIGHT,
         K_N=P.K_N, K_T=P.K_T, E=P.RESTITUTION, GN_PP=gn_pp, GN_PW=gn_pw,
