@@ -194,7 +194,10 @@ def run_discharge(v, L, run, fill, progress=print):
         setup_run(v, L, run, fill)
     for k, steps, cg in chunks(v):
         key = f"chunk_{k}"
-        if key in cost and os.path.exists(os.path.join(run, "dem", f"chunk_{k}.restart")):
+        # done: its cost is written and its restart is there, or a later chunk
+        # ran from it (the restart two chunks back is removed below)
+        if key in cost and (os.path.exists(os.path.join(run, "dem", f"chunk_{k}.restart"))
+                            or f"chunk_{k + 1}" in cost):
             continue
         t0 = time.time()
         cpu = liggghts(run, f"dem/in.chunk_{k}", key)
