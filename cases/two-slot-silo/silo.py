@@ -1,0 +1,211 @@
+"""The two-slot silo's run folders: the derived numbers, the walls (STL) and
+the LIGGGHTS stages (fill, discharge chunks with restarts, the CG chunk).
+Used by study.py; every number comes from parameters.py (README "Parameters")."""
+import json
+import math
+import os
+import random
+import time
+
+import granair_cases as gc
+import parameters as P
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+
+
+def prime_at_least(n):
+    """The smallest prime >= n (LIGGGHTS' random seeds must be primes > 10000)."""
+    def prime(m):
+        return m > 1 and all(m % p for p in range(2, int(m ** 0.5) + 1))
+    while not prime(n):
+        n += 1
+    return n
+
+
+def geometry_name(L):
+    return "single" if L == P.SINGLE else f"L{L}"
+
+
+def numbers(size, friction):
+    """Every placeholder of the templates for a size and a friction set."""
+    s = P.SIZES[size]
+    width, height = s["width"], s["height"]
+    masses = [P.mass(d) for d in P.D_SIZES]
+    m_mean = sum(masses) / len(masses)
+    # the contact time of the lightest particle pair sets the step; the CG
+    # snapshot interval a whole number of steps, so are the series and chunks
+    t_c = P.contact_time(min(masses) / 2)
+    per_snapshot = math.ceil(P.CG_SPACING_T / (P.DT_FRACTION * t_c))
+    dt = P.CG_SPACING_T / per_snapshot
+    v_mean = sum(math.pi / 6 * d ** 3 for d in P.D_SIZES) / len(P.D_SIZES)
+    n_fill = round(width * P.DEPTH * height * P.PHI_SETTLED / v_mean)
+    r_max = max(P.D_SIZES) / 2
+    fill_top = height * P.PHI_SETTLED / P.FILL_PHI_INSERT
+    # the box holds the loose packing (which may grow by a few mm when crowded)
+    z_top = max(1.25 * fill_top, height + P.FEED_HEIGHT) + P.BOX_TOP_MARGIN
+    mu_pp, mu_pw = P.FRICTION[friction]
+    gn_pp, gn_pw = P.gamma_per_mass(m_mean / 2), P.gamma_per_mass(m_mean)
+    snap_steps = per_snapshot
+    return dict(
+        SIZE=size, FRICTION=friction, WIDTH=width, HEIGHT=height, DEPTH=P.DEPTH, N_FILL=n_fill,
+        XLO=-width / 2, XHI=width / 2, ZLO=P.SINK_Z - 0.005, ZHI=z_top, SINK_Z=P.SINK_Z,
+        XLO_OUT=-width / 2 - 0.01, XHI_OUT=width / 2 + 0.01, YHI_OUT=P.DEPTH + 0.01, ZLO_OUT=P.SINK_Z - 0.05,
+        XLO_IN=-width / 2 + r_max, XHI_IN=width / 2 - r_max, YLO_IN=r_max, YHI_IN=P.DEPTH - r_max,
+        ZFILL_LO=r_max, ZFILL_HI=fill_top, ZFEED_LO=height, ZFEED_HI=height + P.FEED_HEIGHT,
+        K_N=P.K_N, K_T=P.K_T, E=P.RESTITUTION, GN_PP=gn_pp, GN_PW=gn_pw,
+        GT_PP=P.ETA_T_FACTOR * gn_pp, GT_PW=P.ETA_T_FACTOR * gn_pw, MU_PP=mu_pp, MU_PW=mu_pw,
+        DEM_DT=dt, CONTACT_TIME=t_c, G=P.G, RHO_P=P.RHO_P, SKIN=0.5 * P.D_MEAN,
+        R1=P.D_SIZES[0] / 2, R2=P.D_SIZES[1] / 2, R3=P.D_SIZES[2] / 2, F1=1 / 3, F2=1 / 3, F3=1 / 3,
+        SETTLE_TIME=s["settle"], N_SETTLE=round(s["settle"] / dt), THERMO_EVERY=round(0.05 / dt),
+        SEED=prime_at_least(12345701 if friction == "low" else 22345701), FEED_PHI=P.FEED_PHI, FEED_EVERY=P.FEED_EVERY,
+        FEED_STEPS=round(P.FEED_EVERY / dt), SERIES_STEPS=round(P.SERIES_EVERY / dt), SNAP_STEPS=snap_steps,
+        GRANAIR_ROOT=ROOT, T_DISCHARGE=s["t_discharge"], CHUNK_T=s["chunk"], STEADY_FROM=s["steady_from"],
+        CG=int(s["cg"]), T_CG=(P.CG_SNAPSHOTS - 1) * P.CG_SPACING_T)
+
+
+def chunks(v):
+    """[(index, steps, cg)]: discharge chunks of about CHUNK_T s, whole numbers of
+    snapshot intervals, then the CG chunk (P.CG_SNAPSHOTS snapshots, the first at
+    its start) if the size has one."""
+    per = v["SNAP_STEPS"]
+    total = round(v["T_DISCHARGE"] / P.CG_SPACING_T)           # in snapshot intervals
+    n = max(1, round(v["T_DISCHARGE"] / v["CHUNK_T"]))
+    edges = [round(total * k / n) for k in range(n + 1)]
+    out = [(k, (edges[k + 1] - edges[k]) * per, False) for k in range(n)]
+    if v["CG"]:
+        # (snapshots - 1) intervals plus one step: the last snapshot is inside the run
+        out.append((n, (P.CG_SNAPSHOTS - 1) * per + 1, True))
+    return out
+
+
+def floor_quads(L, width, depth, piece=0.01):
+    """The floor z = 0 without the openings, in strips of at most `piece` along x
+    (long thin triangles trip LIGGGHTS 3.8's mesh checks)."""
+    xs, solid = [-width / 2], []
+    for (a, b) in P.openings(L):
+        solid.append((xs[-1], a))
+        xs.append(b)
+    solid.append((xs[-1], width / 2))
+    quads = []
+    for (a, b) in solid:
+        n = max(1, math.ceil((b - a) / piece - 1e-9))
+        for k in range(n):
+            x0, x1 = a + (b - a) * k / n, a + (b - a) * (k + 1) / n
+            quads.append([(x0, 0.0, 0.0), (x1, 0.0, 0.0), (x1, depth, 0.0), (x0, depth, 0.0)])
+    return quads
+
+
+def plane_quads(z, width, depth, margin=0.001, piece=0.01):
+    """A horizontal plane at z over the whole silo (the outlet and sink counters)."""
+    x0, x1 = -width / 2 - margin, width / 2 + margin
+    n = math.ceil((x1 - x0) / piece)
+    return [[(x0 + (x1 - x0) * k / n, -margin, z), (x0 + (x1 - x0) * (k + 1) / n, -margin, z),
+             (x0 + (x1 - x0) * (k + 1) / n, depth + margin, z), (x0 + (x1 - x0) * k / n, depth + margin, z)]
+            for k in range(n)]
+
+
+def packing(v):
+    """Random sequential addition of N_FILL spheres (the three sizes in equal
+    numbers, shuffled) in the closed silo at about FILL_PHI_INSERT: [(x, y, z, d)]."""
+    rng = random.Random(v["SEED"])
+    sizes = [P.D_SIZES[k % len(P.D_SIZES)] for k in range(v["N_FILL"])]
+    rng.shuffle(sizes)
+    gap = 0.02 * P.D_MEAN
+
+    def sample(rng, r, top):
+        return (rng.uniform(v["XLO"] + r + gap, v["XHI"] - r - gap), rng.uniform(r + gap, v["DEPTH"] - r - gap),
+                rng.uniform(r + gap, top - r))
+    return gc.dem.loose_packing(sizes, rng, sample, lambda x, y, z, r: True, lambda t: t + 0.002,
+                                v["ZFILL_HI"], max(P.D_SIZES) * 1.0001, gap)
+
+
+def setup_fill(v, fill):
+    gc.template.render(os.path.join(HERE, "template"), fill, v, only=["dem/in.fill", "dem/in.materials"])
+    atoms = packing(v)
+    top = max(a[2] for a in atoms) + max(P.D_SIZES)
+    if top > v["ZHI"]:
+        raise gc.CaseError(f"the loose packing reaches z = {top:.4g} m, above the DEM box (ZHI = {v['ZHI']:.4g} m)")
+    gc.dem.write_data(os.path.join(fill, "dem", "packing.data"), atoms,
+                      (v["XLO"], v["XHI"], 0.0, v["DEPTH"], v["ZLO"], v["ZHI"]), P.RHO_P,
+                      f"two-slot silo loose packing: {len(atoms)} spheres of {', '.join('%g' % (d * 1e3) for d in P.D_SIZES)} mm")
+
+
+def setup_run(v, L, run, fill):
+    """The discharge folder of one geometry: materials, walls, one input per chunk."""
+    gc.template.render(os.path.join(HERE, "template"), run, v, only=["dem/in.materials"])
+    dem = os.path.join(run, "dem")
+    gc.template.write(os.path.join(dem, "floor.stl"), gc.dem.stl("floor", floor_quads(L, v["WIDTH"], v["DEPTH"])))
+    gc.template.write(os.path.join(dem, "outlet.stl"), gc.dem.stl("outlet", plane_quads(0.0, v["WIDTH"], v["DEPTH"])))
+    gc.template.write(os.path.join(dem, "sink.stl"), gc.dem.stl("sink", plane_quads(P.SINK_Z, v["WIDTH"], v["DEPTH"])))
+    with open(os.path.join(HERE, "template", "dem", "in.chunk")) as fh:
+        text = fh.read()
+    for k, steps, cg in chunks(v):
+        restart_in = os.path.relpath(os.path.join(fill, "dem", "fill.restart"), run) if k == 0 else f"dem/chunk_{k - 1}.restart"
+        cv = dict(v, CHUNK=k, N_STEPS=steps, T_CHUNK=steps * v["DEM_DT"], RESTART_IN=restart_in,
+                  RESTART_OUT=f"dem/chunk_{k}.restart", CG_EVERY=v["SNAP_STEPS"] if cg else 0,
+                  FEED_SEED=prime_at_least(v["SEED"] + 1000 * (k + 1)))
+        gc.template.write(os.path.join(dem, f"in.chunk_{k}"), gc.template.fill(text, cv, f"template/dem/in.chunk ({k})"))
+    with open(os.path.join(run, "numbers.json"), "w") as fh:
+        json.dump(dict(v, L=L, OPENINGS=P.openings(L), CHUNKS=chunks(v)), fh, indent=1)
+
+
+def liggghts(case, script, log):
+    """One stand-alone LIGGGHTS stage (one rank); CPU seconds."""
+    return gc.runner.run(["liggghts", "-in", script, "-log", f"log/{log}.liggghts", "-screen", f"log/{log}.screen"],
+                         case, log, np=1, parallel=False)
+
+
+def done_file(case):
+    return os.path.join(case, "cost.json")
+
+
+def read_cost(case):
+    p = done_file(case)
+    if not os.path.exists(p):
+        return {}
+    with open(p) as fh:
+        return json.load(fh)
+
+
+def write_cost(case, cost):
+    with open(done_file(case), "w") as fh:
+        json.dump(cost, fh, indent=1)
+
+
+def run_fill(v, fill):
+    """The fill stage unless its restart exists (resumable)."""
+    cost = read_cost(fill)
+    if "fill" in cost and os.path.exists(os.path.join(fill, "dem", "fill.restart")):
+        return cost
+    setup_fill(v, fill)
+    t0 = time.time()
+    cpu = liggghts(fill, "dem/in.fill", "fill")
+    cost = {"fill": {"cpu_s": round(cpu, 1), "wall_s": round(time.time() - t0, 1)}}
+    write_cost(fill, cost)
+    return cost
+
+
+def run_discharge(v, L, run, fill, progress=print):
+    """The chunks of one geometry in turn, each skipped if its restart and cost
+    exist (a stopped study resumes at the chunk it was in)."""
+    cost = read_cost(run)
+    if not cost:
+        setup_run(v, L, run, fill)
+    for k, steps, cg in chunks(v):
+        key = f"chunk_{k}"
+        # done: its cost is written and its restart is there, or a later chunk
+        # ran from it (the restart two chunks back is removed below)
+        if key in cost and (os.path.exists(os.path.join(run, "dem", f"chunk_{k}.restart"))
+                            or f"chunk_{k + 1}" in cost):
+            continue
+        t0 = time.time()
+        cpu = liggghts(run, f"dem/in.chunk_{k}", key)
+        cost[key] = {"cpu_s": round(cpu, 1), "wall_s": round(time.time() - t0, 1), "steps": steps, "cg": cg}
+        write_cost(run, cost)
+        if k > 0:                   # the previous restart is no longer needed
+            prev = os.path.join(run, "dem", f"chunk_{k - 2}.restart")
+            if os.path.exists(prev):
+                os.remove(prev)
+        progress(f"{os.path.basename(run)}: chunk {k} done, {cpu:.0f} s CPU")
+    return cost
