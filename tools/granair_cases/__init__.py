@@ -12,6 +12,7 @@
     checks      a case's --check: named assertions with tolerances and reasons
     plots       matplotlib (Agg) helpers: figures, Beverloo bands, field panels
     cli         the options every study takes (--out, --check, --np, --setup-only)
+    cg          CG fields: granairCG run on a case's dumps, its CSV read back as grids, tensor invariants
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -23,4 +24,4 @@ class CaseError(Exception):
     file, the key or the command and what was expected."""
 
 
-from . import foam, template, runner, dem, series, powder, closed_forms, levels, checks, plots, cli  # noqa: E402,F401
+from . import foam, template, runner, dem, series, powder, closed_forms, levels, checks, plots, cli, cg  # noqa: E402,F401
