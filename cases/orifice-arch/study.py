@@ -392,7 +392,7 @@ def main():
                     help="dem: fills and runs only; post: only the study's tables and plots from finished runs")
     ap.add_argument("--keep-dumps", action="store_true", help="keep the CG dumps after the fields are made")
     ap.add_argument("--seed", type=int, default=1)
-    a = gc.cli.parse(ap, lambda o: ap.error("--size test needs --out") if o.size == "test"
+    a = gc.cli.parse(ap, lambda o: ap.error(f"--size {o.size} needs --out") if o.size in ("test", "full")
                      else os.path.join(HERE, "results" if o.size == "study" else "run"))
     if a.np != 1:
         ap.error("--np: the runs are serial LIGGGHTS jobs (use --jobs)")
