@@ -127,6 +127,36 @@ def arch(red, variant, R):
     return np.array(rs), np.array(zc)
 
 
+def arch_free_fall(red, variant, R):
+    """The free-fall height of the outlet velocity at each r (|x|) <= ARCH_FIT_R R: z_ff =
+    v_z(r, 0)^2 / (2 g), the height a particle released at rest falls to cross the
+    orifice plane as fast as measured (the classical free-fall arch's definition)."""
+    ax = "r" if variant == "silo" else "x"
+    j = int(np.argmin(abs(red["z"])))
+    sel = (abs(red[ax]) <= P.ARCH_FIT_R * R) & np.isfinite(red["velocity_z"][:, j])
+    return abs(red[ax][sel]), red["velocity_z"][sel, j] ** 2 / (2 * P.G)
+
+
+def arch_contact(red, variant, R, rho_b):
+    """Where the contact stress 'vanishes' at each r (|x|) <= ARCH_FIT_R R: coming down from
+    ARCH_Z_RANGE[1] R, the first z where tr(sigma_c)/3 falls below CONTACT_VANISH rho_b g R
+    (linear between grid points); columns that stay above it to the range's bottom are left out."""
+    ax = "r" if variant == "silo" else "x"
+    z, pc = red["z"], red["p_contact"]
+    ref = P.CONTACT_VANISH * rho_b * P.G * R
+    js = [j for j in np.argsort(z)[::-1] if P.ARCH_Z_RANGE[0] * R - 1e-9 <= z[j] <= P.ARCH_Z_RANGE[1] * R + 1e-9]
+    rs, zs = [], []
+    for i, r in enumerate(red[ax]):
+        if abs(r) > P.ARCH_FIT_R * R:
+            continue
+        for j0, j1 in zip(js, js[1:]):
+            if pc[i, j0] >= ref > pc[i, j1]:
+                rs.append(abs(r))
+                zs.append(z[j0] + (z[j1] - z[j0]) * (pc[i, j0] - ref) / (pc[i, j0] - pc[i, j1]))
+                break
+    return np.array(rs), np.array(zs)
+
+
 def fit_alpha(r, zc, R):
     """alpha of z_c / R = alpha (1 - (r / R)^2) (least squares) and its standard error."""
     f = 1 - (r / R) ** 2
@@ -394,4 +424,43 @@ def summarise(a, wanted):
         axx.legend(fontsize=7)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(out, "arch.png"))
+    return keys + estimates(a, wanted, out)
+
+
+def estimates(a, wanted, out):
+    """The arch three ways for every run with CG fields (Gauss, w = d): the kinetic pressure's
+    maximum z_c, the free-fall height of the outlet velocity z_ff, the contact stress's
+    fall to CONTACT_VANISH rho_b g R; each fitted with alpha (1 - (r/R)^2).
+    fields/arch_estimates.csv, fields/arch_estimates.png; returns summary keys."""
+    rows, keys = [], []
+    runs = [(var, R_d) for var, rs in wanted.items() for R_d in rs
+            if os.path.exists(os.path.join(out, f"{var}_R{R_d:g}_gauss1.csv"))]
+    if not runs:
+        return []
+    plt = gc.plots.pyplot()
+    fig, axes = plt.subplots(1, len(runs), figsize=(4.2 * len(runs), 4.0), squeeze=False)
+    for axx, (var, R_d) in zip(axes[0], runs):
+        R = R_d * P.D
+        red = read_reduced(os.path.join(out, f"{var}_R{R_d:g}_gauss1.csv"), var)
+        rho_b = float(gc.series.read_keys(os.path.join(a.out, "runs", var, "fill", "summary.txt"))["bulk_density_kg_m3"])
+        for (what, label, mk), (r, z) in zip(
+                (("kinetic_max", "kinetic pressure maximum", "o"), ("free_fall", "v_z(r,0)^2 / 2g", "^"),
+                 ("contact_vanish", f"contact P = {P.CONTACT_VANISH:g} rho_b g R", "s")),
+                (arch(red, var, R), arch_free_fall(red, var, R), arch_contact(red, var, R, rho_b))):
+            alpha, se = fit_alpha(r, z, R)
+            rows.append(dict(variant=var, R_over_d=R_d, estimate=what, alpha=alpha, alpha_se_fit=se, points=len(r),
+                             z_axis_over_R=float(z[np.argmin(r)] / R) if len(r) else math.nan))
+            keys.append((f"{var}_R{R_d:g}_{what}_alpha", alpha))
+            line = axx.plot(r / R, z / R, mk, ms=4, label=f"{label}: alpha = {alpha:.2f} +- {se:.2f}")[0]
+            x = np.linspace(0, 1, 50)
+            axx.plot(x, alpha * (1 - x ** 2), color=line.get_color(), lw=1)
+        axx.set(xlabel="r / R" if var == "silo" else "|x| / R", ylabel="z / R", xlim=(0, 1.05),
+                title=f"{var} R = {R_d:g} d (Gauss w = d)")
+        axx.title.set_fontsize(9)
+        axx.grid(alpha=0.3)
+        axx.legend(fontsize=6.5)
+    fig.suptitle("orifice-arch: the free-fall arch three ways, each fitted with alpha (1 - (r/R)^2)", fontsize=9)
+    fig.tight_layout()
+    gc.plots.save(fig, os.path.join(out, "arch_estimates.png"))
+    gc.series.write_rows(os.path.join(out, "arch_estimates.csv"), rows, fmt="{:.6g}")
     return keys

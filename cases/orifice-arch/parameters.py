@@ -65,10 +65,10 @@ SIZES = {
                  slab=dict(width=70.0, h=50.0, R=[17.0], cg=[17.0]),
                  transient=8.0, average=10.0, snapshot=1.0, segment=10.0, settle=(SETTLE_MIN, SETTLE_MAX),
                  kernels=[("gauss", 1.0), ("heaviside", 1.0), ("gauss", 0.5)], block_count=2),
-    # run on this machine (README "Sizes"): the largest silo two shared cores finish in about an hour
-    "study": dict(silo=dict(R_s=15.0, h=30.0, R=[4.0, 5.0, 6.0], cg=[5.0, 6.0]),
-                  slab=dict(width=120.0, h=60.0, R=[17.0, 26.0], cg=[17.0, 26.0]),
-                  transient=10.0, average=20.0, snapshot=0.5, segment=5.0, settle=(SETTLE_MIN, SETTLE_MAX),
+    # run on this machine (README "Sizes"): what two cores shared by six jobs finish in an hour
+    "study": dict(silo=dict(R_s=12.0, h=24.0, R=[3.0, 4.0, 5.0], cg=[4.0, 5.0]),
+                  slab=dict(width=100.0, h=50.0, R=[17.0, 26.0], cg=[17.0, 26.0]),
+                  transient=6.0, average=14.0, snapshot=0.5, segment=5.0, settle=(10.0, 40.0),
                   kernels=[("gauss", 1.0), ("heaviside", 1.0), ("gauss", 0.5)], block_count=4),
     # the reference's R = 16 d with a silo 2.5 R wide (README "Sizes": ~4.6e5 particles,
     # ~3e4 CPU-s per run at the measured 3.4e6 particle-steps per CPU-s; not run here)
@@ -87,6 +87,7 @@ CG_Z_TOP = 33.0                   # ... and z from below the floor to this [d]
 CG_Z_BELOW = 3.0                  # the window starts this far below the floor [d]
 ARCH_Z_RANGE = (-1.0, 2.0)        # z_c(r) is searched for in this range of z / R
 ARCH_FIT_R = 0.9                  # the parabola is fitted over r / R <= this (the rim: noise, the edge's corner)
+CONTACT_VANISH = 0.1              # the contact-stress "arch": where tr(sigma_c)/3 falls to this x rho_b g R (README)
 ARCH_WINDOW_PAD = 3.0             # the small window of the block runs reaches R + this x the kernel's cutoff...
 
 # --- closed form (README "Flow rate") ---------------------------------------

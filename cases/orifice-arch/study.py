@@ -372,8 +372,12 @@ def plot_flow(a, variant, results, path):
 
 
 # ------------------------------------------------------------------ driver
-def check_run(c, r):
+def check_run(c, r, variant):
     s = r["summary"]
+    if variant == "silo":
+        c.within(f"{r['name']}: steady dN/dt in the Beverloo band k = 3..1 (C = 0.58) [1/s]", s["steady_rate_per_s"],
+                 r["bev"][3.0], r["bev"][1.0], "Beverloo (1961) for a circular orifice, the fill's bulk density; "
+                 "the monolayer's slit is reported only (Hagen-Beverloo has no established C, k for one layer)")
     c.exact(f"{r['name']}: packed + re-inserted - present - removed at every count ({s['counts']} counts)",
             int(np.max(np.abs(r["balance"]))), 0, "integer counts: no particle made or lost")
     c.exact(f"{r['name']}: inserted = in silo + below the floor + removed at the end",
@@ -429,7 +433,7 @@ def post(a, wanted):
         for R_d in rs:
             case = os.path.join(a.out, "runs", var, f"R{R_d:g}")
             results[R_d] = r = flow(a, var, R_d, case)
-            check_run(c, r)
+            check_run(c, r, var)
             if R_d in P.SIZES[a.size][var]["cg"]:
                 fields.check(c, a, var, R_d)
         plot_flow(a, var, results, os.path.join(a.out, "flow_rate.png" if var == "silo" else "flow_rate_slab.png"))
