@@ -41,14 +41,13 @@ PACKING_SETTLED = 0.60            # 3-D settled solid fraction, only to size the
 PACKING_SETTLED_2D = 0.80         # monolayer: area fraction of the discs, only to size the fill
 PACKING_INSERT = 0.30             # random sequential addition of the loose fill (3-D; monolayer 0.40)
 PACKING_INSERT_2D = 0.40
-SETTLE_MIN, SETTLE_MAX = 20.0, 60.0   # settling on the closed floor: at least, at most [t_d]
+SETTLE_MIN, SETTLE_MAX = 20.0, 60.0   # settling on the closed floor: at least, at most [t_d] (demo; sizes set their own)
 SETTLE_VRMS = 0.01                # settled when the rms speed < this x sqrt(g d)
 FEED_HEIGHT = 4.0                 # the re-insertion region above the fill: this many d tall
 FEED_FRACTION = 0.30              # re-insertion: fill that region to this solid fraction, ...
 FEED_EVERY = 0.25                 # ... every this many t_d (the free surface stays at the fill height)
 SINK_DEPTH = 4.0                  # particles are deleted (and counted removed) this far below the floor [d]
 PRINT_EVERY = 0.05                # counts written every this many t_d
-SEGMENT = 10.0                    # a run goes in segments of this many t_d, each ending with a restart
 GAP_2D = 1.1                      # monolayer: plate gap [d] ("slightly above d")
 
 # --- sizes (README "Sizes"); lengths in d, times in t_d ---------------------

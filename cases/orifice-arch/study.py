@@ -10,7 +10,7 @@ plates with a slit |x| < R. For each: one fill, a loose random packing settled
 on the closed floor (LIGGGHTS, template/dem/in.fill), then one discharge run
 per outlet radius R of the size (--R: some of them) from that restart, with
 the particles that leave through the sink re-inserted at the top
-(template/dem/in.segment). A run goes in segments of SEGMENT t_d, each ending
+(template/dem/in.liggghts). A run goes in segments of the size's `segment` t_d, each ending
 with a restart: a stopped study resumes where it stopped (finished fills, segments,
 CG fields and runs are skipped). Fills and runs are serial LIGGGHTS jobs,
 --jobs of them at a time (default 2).
@@ -232,7 +232,7 @@ def discharge(a, variant, R_d):
     name = run_name(variant, R_d)
     case = os.path.join(a.out, "runs", variant, f"R{R_d:g}")
     os.makedirs(os.path.join(case, "post"), exist_ok=True)
-    render(variant, case, v, ["dem/in.segment", "dem/in.materials"], ["dem/geometry.liggghts", "dem/floor-open.liggghts"])
+    render(variant, case, v, ["dem/in.liggghts", "dem/in.materials"], ["dem/geometry.liggghts", "dem/floor-open.liggghts"])
     gc.template.write(os.path.join(case, "dem", "bottom.stl"), floor_stl(g, v["R"]))
     gc.template.write(os.path.join(case, "dem", "sink.stl"), sink_stl(g))
     if a.setup_only:
@@ -245,7 +245,7 @@ def discharge(a, variant, R_d):
         s0 = s1
     print(f"orifice-arch {name}: {len(plan)} segments of {st['seg']} steps ({st['seg'] * v['DT'] / P.T_D:.3g} t_d), "
           f"dt = {v['DT']:.4g} s, CG {'on' if cg_on else 'off'}", flush=True)
-    cpu, skipped = gc.runner.chain(case, "dem/in.segment", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
+    cpu, skipped = gc.runner.chain(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
     out = dict(cpu_s=cpu, skipped_segments=skipped)
     out.update(flow(a, variant, R_d, case))
     if cg_on:
