@@ -265,7 +265,36 @@ def counts(case, n_segments):
         with open(path) as fh:
             rows += [[int(round(float(x))) for x in ln.split()] for ln in fh if ln.strip() and not ln.startswith("#")]
     rows = np.array(sorted({r[0]: r for r in rows}.values()))
-    return {k: rows[:, i] for i, k in enumerate(("step", "atoms", "fed", "removed", "below"))}
+    out = {k: rows[:, i] for i, k in enumerate(("step", "atoms", "fed", "removed", "below"))}
+    # the strays each segment deleted at its start (template/dem/in.liggghts) are removed too:
+    # segment k's counts carry those of segments 1..k
+    stray = np.zeros(len(rows), dtype=int)
+    for k, s0 in enumerate(segment_starts(case, n_segments), 1):
+        stray[out["step"] > s0] += strays(case, k)
+    out["stray"] = stray
+    out["removed"] = out["removed"] + stray
+    return out
+
+
+def strays(case, k):
+    """The particles segment k deleted below the sink plane at its start (its LIGGGHTS log)."""
+    path = os.path.join(case, "log", f"segment_{k}.liggghts")
+    try:
+        with open(path) as fh:
+            found = [ln for ln in fh if ln.startswith(f"granair stray {k}:")]
+    except OSError:
+        raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
+    return int(found[-1].split(":")[1].split()[0]) if found else 0
+
+
+def segment_starts(case, n_segments):
+    """The first step of each segment: the step of its restart (the previous one's last count)."""
+    starts = [0]
+    for k in range(1, n_segments):
+        with open(os.path.join(case, "post", f"counts_{k}.txt")) as fh:
+            last = [ln for ln in fh if ln.strip() and not ln.startswith("#")][-1]
+        starts.append(int(round(float(last.split()[0]))))
+    return starts
 
 
 def flow(a, variant, R_d, case):
@@ -313,13 +342,15 @@ def flow(a, variant, R_d, case):
             ("beverloo_k3_per_s", bev[3.0]), ("beverloo_k1_per_s", bev[1.0]), ("beverloo_k_at_C058", k_fit),
             ("packed", packed), ("reinserted", last["fed"]), ("inserted", packed + last["fed"]), ("in_silo", in_silo),
             ("below_floor", last["below"]), ("removed_at_sink", last["removed"]),
+            ("of_which_strays", last["stray"]),
             ("discharged", last["removed"] + last["below"]),
             ("balance_max_abs", int(np.max(np.abs(balance)))), ("counts", len(t)),
             ("segments", nseg), ("cpu_s", round(cpu, 1)), ("wall_s", round(wall)),
             ("particle_steps_per_cpu_s", float(np.mean(c["atoms"])) * c["step"][-1] / cpu if cpu else math.nan)]
     gc.series.write_keys(os.path.join(a.out, f"{name}.summary.txt"), keys,
                          f"orifice-arch {name} (study.py): counts of particles; inserted = packed + reinserted = "
-                         "in_silo + below_floor + removed_at_sink; discharged = below_floor + removed_at_sink")
+                         "in_silo + below_floor + removed_at_sink; discharged = below_floor + removed_at_sink; of_which_strays: "
+                         "particles a segment found below the sink plane at its start and deleted (template/dem/in.liggghts)")
     if variant == "silo":
         gc.levels.write(os.path.join(a.out, f"{name}.level.json"), case="orifice-arch", level="cg-dem",
                         model=f"DEM at the particle size (s = 1), LIGGGHTS linear spring-dashpot, k_n = {P.K_N:.3g} N/m, "
