@@ -70,7 +70,7 @@ SIZES = {
                   transient=6.0, average=14.0, snapshot=0.5, segment=5.0, settle=(10.0, 40.0),
                   kernels=[("gauss", 1.0), ("heaviside", 1.0), ("gauss", 0.5)], block_count=4),
     # the reference's R = 16 d with a silo 2.5 R wide (README "Sizes": ~4.6e5 particles,
-    # ~3e4 CPU-s per run at the measured 3.4e6 particle-steps per CPU-s; not run here)
+    # ~2.8e4 CPU-s per run at the measured 3.5e6 particle-steps per CPU-s; not run here)
     "full": dict(silo=dict(R_s=40.0, h=80.0, R=[8.0, 12.0, 16.0], cg=[12.0, 16.0]),
                  slab=dict(width=400.0, h=200.0, R=[17.0, 26.0], cg=[17.0, 26.0]),
                  transient=20.0, average=60.0, snapshot=0.5, segment=5.0, settle=(SETTLE_MIN, SETTLE_MAX),
