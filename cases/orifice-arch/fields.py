@@ -107,7 +107,10 @@ def arch(red, variant, R):
     arrays (only columns with an interior maximum in ARCH_Z_RANGE R; the monolayer folds |x|)."""
     ax = "r" if variant == "silo" else "x"
     z, pk = red["z"], red["p_kinetic"]
-    sel_z = np.nonzero((z >= P.ARCH_Z_RANGE[0] * R - 1e-9) & (z <= P.ARCH_Z_RANGE[1] * R + 1e-9))[0]
+    # the range stops 3 grid spacings below the window's top: a "maximum" there is the window's
+    # edge (the monolayer at R = 17 d: P_kinetic grows up to the top of the window)
+    top = min(P.ARCH_Z_RANGE[1] * R, z[-1] - 3 * (z[1] - z[0]))
+    sel_z = np.nonzero((z >= P.ARCH_Z_RANGE[0] * R - 1e-9) & (z <= top + 1e-9))[0]
     rs, zc = [], []
     for i, r in enumerate(red[ax]):
         if abs(r) > P.ARCH_FIT_R * R:
