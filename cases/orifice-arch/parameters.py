@@ -21,7 +21,7 @@ G = 9.81
 MASS = RHO_P * math.pi / 6 * D ** 3   # one particle [kg] (0.1202)
 T_D = math.sqrt(2 * R_P / G)      # the reference's time unit t_d = sqrt(2 r_p / g) [s] (0.05644)
 
-# --- the contact law (chosen; README "Contact law") --------------------------
+# --- the contact law (chosen; README "Parameters") --------------------------
 # Linear spring-dashpot in the normal direction, LIGGGHTS 3.8
 # `gran model hooke/stiffness` (F_n = k_n delta - m_eff gamma_n v_n, constant
 # k_n, no force limit), gamma_n from e_n for particle pairs (m_eff = m/2) and
@@ -37,7 +37,7 @@ STEPS_PER_CONTACT = 25            # DEM dt = contact time of a pair / this
 SKIN = 0.2                        # neighbour skin [d]
 
 # --- the run (chosen) -------------------------------------------------------
-PACKING_SETTLED = 0.60            # 3-D settled solid fraction, only to size the fill (measured: README)
+PACKING_SETTLED = 0.60            # 3-D settled solid fraction, only to size the fill (measured 0.574 at the study size: README "Flow rate")
 PACKING_SETTLED_2D = 0.80         # monolayer: area fraction of the discs, only to size the fill
 PACKING_INSERT = 0.30             # random sequential addition of the loose fill (3-D; monolayer 0.40)
 PACKING_INSERT_2D = 0.40
