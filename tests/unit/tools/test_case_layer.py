@@ -226,5 +226,58 @@ class ChecksAndRunner(unittest.TestCase):
             self.assertEqual(r, {"a": {"cpu_s": 1}, "b": 2})
 
 
+class CG(unittest.TestCase):
+    def test_read_grids_and_invariants(self):
+        with tempfile.TemporaryDirectory() as d:
+            rows = ["r,z,density,contact_stress_rr,contact_stress_rt,contact_stress_rz,contact_stress_tr,"
+                    "contact_stress_tt,contact_stress_tz,contact_stress_zr,contact_stress_zt,contact_stress_zz"]
+            for r in (0.5, 1.5):
+                for z in (0.0, 1.0, 2.0):       # sigma = diag(1, 2, 6) + shear 3 in rz
+                    rows.append(f"{r},{z},{10 * r + z},1,0,3,0,2,0,3,0,6")
+            write(os.path.join(d, "f.csv"), "\n".join(rows) + "\n")
+            f = gc.cg.read(os.path.join(d, "f.csv"))
+            self.assertEqual(f["axes"], ("r", "z"))
+            self.assertEqual(f["density"].shape, (2, 3))
+            self.assertAlmostEqual(f["density"][1, 2], 17.0)
+            p, tau = gc.cg.invariants(f, "contact_stress")
+            # P = 3; deviator diag(-2, -1, 3), shear 3: J2 = (4 + 1 + 9) / 2 + 9 = 16
+            np.testing.assert_allclose(p, 3.0)
+            np.testing.assert_allclose(tau, 4.0)
+            with self.assertRaisesRegex(CaseError, "kinetic_stress"):
+                gc.cg.invariants(f, "kinetic_stress")
+            write(os.path.join(d, "bad.csv"), "r,z,density\n0.5,0,1\n1.5,1,2\n")
+            with self.assertRaisesRegex(CaseError, "not a grid"):
+                gc.cg.read(os.path.join(d, "bad.csv"))
+
+
+class Chain(unittest.TestCase):
+    def test_segments_resume_and_need_their_restart(self):
+        """A fake `liggghts` that writes restart_out: the second call skips the finished segments."""
+        with tempfile.TemporaryDirectory() as d:
+            fake = os.path.join(d, "bin", "liggghts")
+            write(fake, "#!/bin/sh\nwhile [ $# -gt 0 ]; do [ \"$1\" = -var ] && [ \"$2\" = restart_out ] && "
+                  "echo \"$@\" > \"$3\"; shift; done\n")
+            os.chmod(fake, 0o755)
+            old = os.environ["PATH"]
+            os.environ["PATH"] = os.path.dirname(fake) + os.pathsep + old
+            try:
+                case = os.path.join(d, "case")
+                write(os.path.join(case, "fill.restart"), "x")
+                segs = [dict(nsteps=10), dict(nsteps=20)]
+                cpu, skipped = gc.runner.chain(case, "in.seg", segs, "fill.restart", label="test")
+                self.assertEqual(skipped, 0)
+                self.assertTrue(os.path.exists(os.path.join(case, "restart", "segment_2.restart")))
+                self.assertFalse(os.path.exists(os.path.join(case, "restart", "segment_1.restart")))
+                self.assertEqual(gc.runner.chain_cost(case)[2], 2)
+                cpu, skipped = gc.runner.chain(case, "in.seg", segs + [dict(nsteps=30)], "fill.restart", label="test")
+                self.assertEqual(skipped, 2)
+                self.assertEqual(gc.runner.chain_cost(case)[2], 3)
+                os.remove(os.path.join(case, "restart", "segment_3.restart"))
+                with self.assertRaisesRegex(CaseError, "needs the restart"):
+                    gc.runner.chain(case, "in.seg", segs + [dict(nsteps=30)] * 2, "fill.restart", label="test")
+            finally:
+                os.environ["PATH"] = old
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

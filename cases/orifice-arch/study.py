@@ -1,0 +1,491 @@
+#!/usr/bin/python3
+"""Flow through an orifice and the free-fall arch (reference case E, README.md).
+
+    study.py [--size test|demo|study] [--variant silo slab] [--R R ...] [--out DIR] [--jobs 2]
+             [--stage all|dem|post] [--keep-dumps] [--setup-only] [--check]
+
+Two geometries (--variant): `silo`, the 3-D flat-bottomed cylindrical silo with
+a circular outlet of radius R, and `slab`, the quasi-2-D monolayer between two
+plates with a slit |x| < R. For each: one fill, a loose random packing settled
+on the closed floor (LIGGGHTS, template/dem/in.fill), then one discharge run
+per outlet radius R of the size (--R: some of them) from that restart, with
+the particles that leave through the sink re-inserted at the top
+(template/dem/in.liggghts). A run goes in segments of the size's `segment` t_d, each ending
+with a restart: a stopped study resumes where it stopped (finished fills, segments,
+CG fields and runs are skipped). Fills and runs are serial LIGGGHTS jobs,
+--jobs of them at a time (default 2).
+
+Per run: counts every PRINT_EVERY t_d (present, re-inserted, removed, below
+the floor), the flow rate dN/dt against t / t_d and its steady value over the
+averaging window, Beverloo; for the outlets of the size's `cg` list, CG fields
+over the averaging window (fields.py: granairCG, profiles, maps, the free-fall
+arch z_c(r) and its paraboloid fit).
+
+Outputs in OUT (default: results/ for the study size, run/ for demo):
+flow_rate.png, flow_rate_slab.png, beverloo.csv, <variant>_R<R>.csv (counts) and
+.flow.csv (1 t_d means), <silo run>.level.json (./granair compare), fields/
+(fields.py), summary.txt; the run folders in OUT/runs.
+
+Checked (--check exits 1 on a failure): at every count the accounting closes
+exactly (packed + re-inserted = present + removed; present = in the silo +
+below the floor), and at the end inserted = in silo + below the floor +
+removed; CG: every stress finite, the density integrated over a window
+enclosing every particle equals their mass within MASS_INTEGRAL_TOL.
+"""
+import math
+import os
+import random
+import shutil
+import time
+
+import numpy as np
+
+import granair_cases as gc
+import parameters as P
+import fields
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+VARIANTS = ("silo", "slab")
+
+
+# ------------------------------------------------------------------ numbers
+def law():
+    """The contact law's template values and the DEM step (parameters.contact_law)."""
+    cl = P.contact_law()
+    return dict(KN=P.K_N, KT=P.KT_OVER_KN * P.K_N, GAMMAN_PP=cl["gamman_pp"], GAMMAN_PW=cl["gamman_pw"],
+                GAMMAT_PP=P.KT_OVER_KN * cl["gamman_pp"], GAMMAT_PW=P.KT_OVER_KN * cl["gamman_pw"],
+                DT=cl["dt"], T_CONTACT=cl["t_contact_pp"])
+
+
+def steps(size):
+    """Step counts of a size: between counts, CG snapshots, segments; the start of the
+    averaging window and the run's end (all whole multiples of the count interval)."""
+    cfg, dt = P.SIZES[size], law()["DT"]
+    n_print = max(1, round(P.PRINT_EVERY * P.T_D / dt))
+    n_snap = n_print * max(1, round(cfg["snapshot"] / P.PRINT_EVERY))
+    n_seg = n_snap * max(1, round(cfg["segment"] / cfg["snapshot"]))
+    n_from = n_snap * round(cfg["transient"] / cfg["snapshot"])
+    return dict(print=n_print, snap=n_snap, seg=n_seg, avg_from=n_from,
+                total=n_from + n_snap * round(cfg["average"] / cfg["snapshot"]))
+
+
+def geometry(size, variant):
+    """The geometry of a size's silo or monolayer [m], its fill and its box."""
+    c, d = P.SIZES[size][variant], P.D
+    v_p = math.pi / 6 * d ** 3
+    g = dict(variant=variant, d=d, h=c["h"] * d, z_sink=-P.SINK_DEPTH * d)
+    if variant == "silo":
+        r_s = c["R_s"] * d
+        g.update(R_s=r_s, n=round(P.PACKING_SETTLED * math.pi * r_s ** 2 * g["h"] / v_p), half_x=r_s + 2 * d,
+                 half_y=r_s + 2 * d)
+        g["loose_top"] = g["n"] * v_p / (P.PACKING_INSERT * math.pi * r_s ** 2)
+    else:
+        w = c["width"] * d
+        g.update(width=w, half_gap=P.GAP_2D * d / 2, n=round(P.PACKING_SETTLED_2D * w * g["h"] / (math.pi * d * d / 4)),
+                 half_x=w / 2 + d, half_y=P.GAP_2D * d / 2 + d / 2)
+        g["loose_top"] = g["n"] * math.pi * d * d / 4 / (P.PACKING_INSERT_2D * w)
+    g["z_lo"] = g["z_sink"] - 2 * d
+    g["z_hi"] = max(g["loose_top"] + 2 * d, g["h"] + (P.FEED_HEIGHT + 3) * d)
+    return g
+
+
+def values(size, variant, R_d=None):
+    """Every template value of a fill (R_d None) or of the run with outlet radius R_d [d]."""
+    g, st, d = geometry(size, variant), steps(size), P.D
+    v = dict(gc.template.constants(P), **law())
+    chunk = max(1, round(P.T_D / v["DT"]))
+    settle = P.SIZES[size]["settle"]
+    v.update(SKIN=P.SKIN * d, CHUNK=chunk, SETTLE_MIN=settle[0], SETTLE_MAX=settle[1],
+             N_MIN=math.ceil(settle[0] * P.T_D / (chunk * v["DT"])), N_MAX=math.ceil(settle[1] * P.T_D / (chunk * v["DT"])),
+             VRMS_SETTLED=P.SETTLE_VRMS * math.sqrt(P.G * d), Z_FEED_LO=g["h"], Z_FEED_HI=g["h"] + P.FEED_HEIGHT * d,
+             Z_SINK=g["z_sink"], FEED_EVERY_STEPS=max(1, round(P.FEED_EVERY * P.T_D / v["DT"])),
+             PRINT_EVERY_STEPS=st["print"], THERMO_EVERY=chunk, GRANAIR_ROOT=os.environ.get("GRANAIR_ROOT", ROOT))
+    if variant == "silo":
+        v.update(R_S=g["R_s"], R_S_D=g["R_s"] / d, R_FEED=g["R_s"] - 1e-3 * d, N_PHI=96)
+    else:
+        v.update(HALF_GAP=g["half_gap"], HALF_WIDTH=g["width"] / 2, WIDTH_D=g["width"] / d)
+    if R_d is not None:
+        v.update(R_D=R_d, R=R_d * d)
+    return v, g
+
+
+# ---------------------------------------------------------------- geometry files
+def packing(g, seed):
+    """Random sequential addition of the fill at PACKING_INSERT: [(x, y, z, d)]."""
+    d, gap = g["d"], 0.02 * g["d"]
+    r = d / 2
+    if g["variant"] == "silo":
+        rmax = g["R_s"] - r - gap
+
+        def sample(rng, r, top):
+            return rng.uniform(-rmax, rmax), rng.uniform(-rmax, rmax), rng.uniform(r + gap, top)
+
+        def inside(x, y, z, r):
+            return x * x + y * y <= rmax * rmax and z >= r + gap
+    else:
+        xmax, ymax = g["width"] / 2 - r - gap, g["half_gap"] - r - gap
+
+        def sample(rng, r, top):
+            return rng.uniform(-xmax, xmax), rng.uniform(-ymax, ymax), rng.uniform(r + gap, top)
+
+        def inside(x, y, z, r):
+            return abs(x) <= xmax and abs(y) <= ymax and z >= r + gap
+    return gc.dem.loose_packing([d] * g["n"], random.Random(seed), sample, inside, lambda t: t + d, g["loose_top"],
+                                d * 1.0001, gap, origin=(-g["half_x"], -g["half_y"], 0.0))
+
+
+def floor_stl(g, R):
+    """The floor with the outlet: an annulus from R (an n-gon with the circle's area)
+    to beyond the silo wall, or two strips beside the slit |x| < R across the gap."""
+    d, quads = g["d"], []
+    if g["variant"] == "silo":
+        n = 96
+        r0 = R * math.sqrt(2 * math.pi / (n * math.sin(2 * math.pi / n)))
+        r1 = g["R_s"] + 1.5 * d
+        rings = max(1, math.ceil(math.log(r1 / r0) / math.log(1 + 2 * math.pi / n)))
+        radii = [r0 * (r1 / r0) ** (k / rings) for k in range(rings + 1)]
+        for a, b in zip(radii, radii[1:]):
+            for j in range(n):
+                t0, t1 = 2 * math.pi * j / n, 2 * math.pi * (j + 1) / n
+                quads.append([(a * math.cos(t0), a * math.sin(t0), 0.0), (b * math.cos(t0), b * math.sin(t0), 0.0),
+                              (b * math.cos(t1), b * math.sin(t1), 0.0), (a * math.cos(t1), a * math.sin(t1), 0.0)])
+    else:
+        y, x1 = g["half_gap"] + 0.25 * d, g["width"] / 2 + 0.5 * d
+        pieces = max(1, math.ceil((x1 - R) / d))
+        xs = [R + (x1 - R) * k / pieces for k in range(pieces + 1)]
+        for a, b in zip(xs, xs[1:]):
+            for s in (1, -1):
+                quads.append([(s * a, -y, 0.0), (s * b, -y, 0.0), (s * b, y, 0.0), (s * a, y, 0.0)])
+    return gc.dem.stl("bottom", quads)
+
+
+def sink_stl(g):
+    """The sink plane z = z_sink across the whole box, in pieces about d wide."""
+    hx, hy = g["half_x"] - 0.1 * g["d"], g["half_y"] - 0.1 * g["d"]
+    nx, ny = max(1, math.ceil(2 * hx / (4 * g["d"]))), max(1, math.ceil(2 * hy / (4 * g["d"])))
+    xs = [-hx + 2 * hx * i / nx for i in range(nx + 1)]
+    ys = [-hy + 2 * hy * j / ny for j in range(ny + 1)]
+    z = g["z_sink"]
+    quads = [[(a, c, z), (b, c, z), (b, e, z), (a, e, z)] for a, b in zip(xs, xs[1:]) for c, e in zip(ys, ys[1:])]
+    return gc.dem.stl("sink", quads)
+
+
+def render(variant, dst, v, common, own):
+    """Files of template/ (common to both geometries) and of template-<variant>/ into dst."""
+    gc.template.render(os.path.join(HERE, "template"), dst, v, only=common)
+    gc.template.render(os.path.join(HERE, f"template-{variant}"), dst, v, only=own)
+
+
+# ------------------------------------------------------------------ stages
+def fill(a, variant):
+    """The fill of a geometry (skipped when its restart exists): packing, settling,
+    the settled top and bulk density. Returns its summary dict."""
+    v, g = values(a.size, variant)
+    case = os.path.join(a.out, "runs", variant, "fill")
+    summary = os.path.join(case, "summary.txt")
+    if os.path.exists(summary) and os.path.exists(os.path.join(case, "dem", "fill.restart")):
+        return dict(gc.series.read_keys(summary), skipped=1)
+    gc.runner.clean(case)
+    t0, c0 = time.time(), time.process_time()
+    atoms = packing(g, a.seed)
+    top = max(z for _, _, z, _ in atoms) + g["d"]
+    render(variant, case, v, ["dem/in.fill", "dem/in.materials", "dem/floor-closed.liggghts"], ["dem/geometry.liggghts"])
+    gc.dem.write_data(os.path.join(case, "dem", "packing.data"), atoms,
+                      (-g["half_x"], g["half_x"], -g["half_y"], g["half_y"], g["z_lo"], max(g["z_hi"], top)), P.RHO_P,
+                      f"orifice-arch {variant} loose packing: {len(atoms)} spheres of d = {g['d']} m (study.py)")
+    pack_cpu = time.process_time() - c0
+    if a.setup_only:
+        return {}
+    print(f"orifice-arch {variant} fill: {len(atoms)} particles packed ({pack_cpu:.0f} CPU-s), settling", flush=True)
+    cpu = gc.runner.run(["liggghts", "-in", "dem/in.fill", "-log", "log/fill.liggghts", "-screen", "log/fill.screen"],
+                        case, "fill", parallel=False)
+    with open(os.path.join(case, "log", "fill.liggghts")) as fh:
+        settled = [ln.strip() for ln in fh if ln.startswith("granair fill:")][-1]
+    dump = gc.dem.read_dump(os.path.join(case, "dem", "fill.dump"))
+    z, m = dump["z"], dump["mass"]
+    k_top = 200 if variant == "silo" else 20
+    top = float(np.mean(np.sort(z)[::-1][:k_top]))
+    z0, z1 = 2 * g["d"], top - 2 * g["d"]
+    sel = (z > z0) & (z < z1)
+    area = math.pi * g["R_s"] ** 2 if variant == "silo" else g["width"] * 2 * g["half_gap"]
+    rho_b = float(m[sel].sum() / (area * (z1 - z0)))
+    keys = [("variant", variant), ("particles_packed", len(atoms)), ("settled", settled), ("settled_top_m", top),
+            ("settled_top_d", top / g["d"]), ("bulk_density_kg_m3", rho_b), ("solid_fraction", rho_b / P.RHO_P),
+            ("packing_cpu_s", round(pack_cpu, 2)), ("fill_cpu_s", round(cpu, 2)), ("fill_wall_s", round(time.time() - t0))]
+    gc.series.write_keys(summary, keys, f"orifice-arch {variant} fill (study.py); bulk density between 2 d and "
+                         "2 d below the top (the monolayer: per unit volume of the gap)")
+    print(f"orifice-arch {variant} fill: {settled}; bulk density {rho_b:.1f} kg/m3 (solid fraction "
+          f"{rho_b / P.RHO_P:.3f}), {cpu:.0f} CPU-s", flush=True)
+    return dict(gc.series.read_keys(summary), skipped=0)
+
+
+def run_name(variant, R_d):
+    return f"{variant}_R{R_d:g}"
+
+
+def discharge(a, variant, R_d):
+    """One discharge run: the segment chain (resumable), its counts, and CG fields if R_d is
+    in the size's cg list. Returns dict(cpu_s: CPU used now, and the run's post-processing)."""
+    v, g = values(a.size, variant, R_d)
+    st = steps(a.size)
+    name = run_name(variant, R_d)
+    case = os.path.join(a.out, "runs", variant, f"R{R_d:g}")
+    os.makedirs(os.path.join(case, "post"), exist_ok=True)
+    render(variant, case, v, ["dem/in.liggghts", "dem/in.materials"], ["dem/geometry.liggghts", "dem/floor-open.liggghts"])
+    gc.template.write(os.path.join(case, "dem", "bottom.stl"), floor_stl(g, v["R"]))
+    gc.template.write(os.path.join(case, "dem", "sink.stl"), sink_stl(g))
+    if a.setup_only:
+        return {}
+    cg_on = R_d in P.SIZES[a.size][variant]["cg"]
+    plan, s0 = [], 0
+    while s0 < st["total"]:
+        s1 = min(s0 + st["seg"], st["total"])
+        plan.append(dict(nsteps=s1 - s0, cg_every=st["snap"] if cg_on and s1 > st["avg_from"] else 0))
+        s0 = s1
+    print(f"orifice-arch {name}: {len(plan)} segments of {st['seg']} steps ({st['seg'] * v['DT'] / P.T_D:.3g} t_d), "
+          f"dt = {v['DT']:.4g} s, CG {'on' if cg_on else 'off'}", flush=True)
+    cpu, skipped = gc.runner.chain(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
+    out = dict(cpu_s=cpu, skipped_segments=skipped)
+    out.update(flow(a, variant, R_d, case))
+    if cg_on:
+        out["fields"] = fields.compute(a, variant, R_d, case, g, v["DT"], st, keep_dumps=a.keep_dumps)
+        out["cpu_s"] += out["fields"]["cpu_s"]
+    return out
+
+
+# ------------------------------------------------------------------ flow rates
+def counts(case, n_segments):
+    """The counts of a run's segments in order: {step, atoms, fed, removed, below} (ints)."""
+    rows = []
+    for k in range(1, n_segments + 1):
+        path = os.path.join(case, "post", f"counts_{k}.txt")
+        if not os.path.exists(path):
+            raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
+        with open(path) as fh:
+            rows += [[int(round(float(x))) for x in ln.split()] for ln in fh if ln.strip() and not ln.startswith("#")]
+    rows = np.array(sorted({r[0]: r for r in rows}.values()))
+    out = {k: rows[:, i] for i, k in enumerate(("step", "atoms", "fed", "removed", "below"))}
+    # the strays each segment deleted at its start (template/dem/in.liggghts) are removed too:
+    # segment k's counts carry those of segments 1..k
+    stray = np.zeros(len(rows), dtype=int)
+    for k, s0 in enumerate(segment_starts(case, n_segments), 1):
+        stray[out["step"] > s0] += strays(case, k)
+    out["stray"] = stray
+    out["removed"] = out["removed"] + stray
+    return out
+
+
+def strays(case, k):
+    """The particles segment k deleted below the sink plane at its start (its LIGGGHTS log)."""
+    path = os.path.join(case, "log", f"segment_{k}.liggghts")
+    try:
+        with open(path) as fh:
+            found = [ln for ln in fh if ln.startswith(f"granair stray {k}:")]
+    except OSError:
+        raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
+    return int(found[-1].split(":")[1].split()[0]) if found else 0
+
+
+def segment_starts(case, n_segments):
+    """The first step of each segment: the step of its restart (the previous one's last count)."""
+    starts = [0]
+    for k in range(1, n_segments):
+        with open(os.path.join(case, "post", f"counts_{k}.txt")) as fh:
+            last = [ln for ln in fh if ln.strip() and not ln.startswith("#")][-1]
+        starts.append(int(round(float(last.split()[0]))))
+    return starts
+
+
+def flow(a, variant, R_d, case):
+    """Counts, accounting and flow rate of one run; writes OUT/<name>.csv, .flow.csv, .summary.txt."""
+    v, g = values(a.size, variant, R_d)
+    st = steps(a.size)
+    name = run_name(variant, R_d)
+    fill_keys = gc.series.read_keys(os.path.join(a.out, "runs", variant, "fill", "summary.txt"))
+    packed = int(fill_keys["particles_packed"])
+    c = counts(case, math.ceil(st["total"] / st["seg"]))
+    t = c["step"] * v["DT"]
+    discharged = c["removed"] + c["below"]
+    balance = packed + c["fed"] - c["atoms"] - c["removed"]        # 0 at every count
+    gc.series.write_csv(os.path.join(a.out, f"{name}.csv"),
+                        [("t_over_td", t / P.T_D), ("t_s", t), ("present", c["atoms"]), ("reinserted", c["fed"]),
+                         ("removed", c["removed"]), ("below_floor", c["below"]), ("discharged", discharged)],
+                        fmt=["{:.6g}", "{:.6g}", "{:d}", "{:d}", "{:d}", "{:d}", "{:d}"])
+    # dN/dt: means over windows of 1 t_d (the change of the discharged count over each)
+    per = max(1, round(P.T_D / (st["print"] * v["DT"])))
+    edges = np.arange(0, len(t), per)
+    tw = 0.5 * (t[edges[:-1]] + t[edges[1:]])
+    rate = np.diff(discharged[edges]) / np.diff(t[edges])
+    mass_flow = rate * P.MASS
+    gc.series.write_csv(os.path.join(a.out, f"{name}.flow.csv"),
+                        [("t", tw), ("t_over_td", tw / P.T_D), ("rate_per_s", rate), ("mass_flow_kg_s", mass_flow)],
+                        fmt="{:.6g}")
+    t0 = st["avg_from"] * v["DT"]
+    steady = gc.series.slope(t, discharged.astype(float), t0)
+    sel = tw >= t0
+    se = float(np.std(rate[sel], ddof=1) / math.sqrt(sel.sum())) if sel.sum() > 1 else math.nan
+    rho_b = float(fill_keys["bulk_density_kg_m3"])
+    gap = 2 * g["half_gap"] if variant == "slab" else None
+    bev = {k: P.beverloo_rate(v["R"], rho_b, k, gap) for k in P.K_RANGE}
+    # k of Beverloo with C fixed: (W / (C rho_b sqrt(g) [L]))^(1/n) = D - k d
+    n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
+    w = steady * P.MASS
+    k_fit = (2 * v["R"] - (w / (P.BEVERLOO_C * rho_b * math.sqrt(P.G) * length)) ** (1 / n_exp)) / P.D
+    cpu, wall, nseg = gc.runner.chain_cost(case)
+    last = {k: int(x[-1]) for k, x in c.items()}
+    in_silo = last["atoms"] - last["below"]
+    keys = [("run", name), ("R_over_d", R_d), ("outlet_width_m", 2 * v["R"]), ("dt_s", v["DT"]), ("t_d_s", P.T_D),
+            ("t_end_over_td", float(t[-1] / P.T_D)), ("average_from_over_td", t0 / P.T_D),
+            ("steady_rate_per_s", steady), ("steady_rate_se_per_s", se), ("steady_rate_per_td", steady * P.T_D),
+            ("steady_mass_flow_kg_s", w), ("bulk_density_kg_m3", rho_b),
+            ("beverloo_k3_per_s", bev[3.0]), ("beverloo_k1_per_s", bev[1.0]), ("beverloo_k_at_C058", k_fit),
+            ("packed", packed), ("reinserted", last["fed"]), ("inserted", packed + last["fed"]), ("in_silo", in_silo),
+            ("below_floor", last["below"]), ("removed_at_sink", last["removed"]),
+            ("of_which_strays", last["stray"]),
+            ("discharged", last["removed"] + last["below"]),
+            ("balance_max_abs", int(np.max(np.abs(balance)))), ("counts", len(t)),
+            ("segments", nseg), ("cpu_s", round(cpu, 1)), ("wall_s", round(wall)),
+            ("particle_steps_per_cpu_s", float(np.mean(c["atoms"])) * c["step"][-1] / cpu if cpu else math.nan)]
+    gc.series.write_keys(os.path.join(a.out, f"{name}.summary.txt"), keys,
+                         f"orifice-arch {name} (study.py): counts of particles; inserted = packed + reinserted = "
+                         "in_silo + below_floor + removed_at_sink; discharged = below_floor + removed_at_sink; of_which_strays: "
+                         "particles a segment found below the sink plane at its start and deleted (template/dem/in.liggghts)")
+    if variant == "silo":
+        gc.levels.write(os.path.join(a.out, f"{name}.level.json"), case="orifice-arch", level="cg-dem",
+                        model=f"DEM at the particle size (s = 1), LIGGGHTS linear spring-dashpot, k_n = {P.K_N:.3g} N/m, "
+                              f"e_n = {P.RESTITUTION}, mu = {P.FRICTION_PP}, R = {R_d:g} d, silo R_s = "
+                              f"{g['R_s'] / P.D:g} d, {a.size} size, re-inserted at the top, vacuum",
+                        b_mm=round(2 * v["R"] * 1e3, 6), air=False, steady_mass_flow_kg_s=w,
+                        steady_window_s=[t0, float(t[-1])], outlet_dpdz_Pa_m=None, wall_time_s=round(wall),
+                        cores=1, timeseries=f"{name}.flow.csv", cpu_s=round(cpu, 1),
+                        steady_rate_per_s=steady, steady_rate_se_per_s=se)
+    print(f"orifice-arch {name}: dN/dt = {steady:.1f} +- {se:.1f} 1/s ({steady * P.T_D:.2f} per t_d) over t = "
+          f"{t0 / P.T_D:g}-{t[-1] / P.T_D:.3g} t_d; Beverloo {bev[3.0]:.0f}-{bev[1.0]:.0f} 1/s (k = 3..1; k = "
+          f"{k_fit:.2f} at C = 0.58); accounting {packed} + {last['fed']} = {in_silo} + {last['below']} + "
+          f"{last['removed']} (largest imbalance {int(np.max(np.abs(balance)))}); {cpu:.0f} CPU-s", flush=True)
+    return dict(name=name, summary=dict(keys), t=t, discharged=discharged, tw=tw, rate=rate, balance=balance,
+                bev=bev, steady=steady, se=se)
+
+
+def beverloo_fit(rows, gap=None):
+    """C and k of Beverloo from several outlets: W^(1/n) = (C rho_b sqrt(g) L)^(1/n) (D - k d) is
+    linear in D (n = 5/2 circular, 3/2 slit of length L = gap). rows: [(R, W [kg/s], rho_b)]."""
+    if len(rows) < 2:
+        return math.nan, math.nan
+    n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
+    D = np.array([2 * r for r, _, _ in rows])
+    y = np.array([w ** (1 / n_exp) for _, w, _ in rows])
+    slope, icpt = np.polyfit(D, y, 1)
+    rho_b = float(np.mean([rb for _, _, rb in rows]))
+    return float(slope ** n_exp / (rho_b * math.sqrt(P.G) * length)), float(-icpt / slope / P.D)
+
+
+def plot_flow(a, variant, results, path):
+    plt = gc.plots.pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 4.6))
+    t0 = steps(a.size)["avg_from"] * law()["DT"] / P.T_D
+    for i, (R_d, r) in enumerate(sorted(results.items())):
+        col = f"C{i}"
+        ax.plot(r["tw"] / P.T_D, r["rate"] * P.T_D, color=col, lw=1.2,
+                label=f"R = {R_d:g} d: {r['steady'] * P.T_D:.1f} per t_d")
+        ax.axhspan(r["bev"][3.0] * P.T_D, r["bev"][1.0] * P.T_D, color=col, alpha=0.15)
+    ax.axvline(t0, color="0.4", ls=":", lw=1)
+    ax.text(t0, ax.get_ylim()[1] * 0.97, " averaging window", fontsize=7, va="top", color="0.3")
+    what = "3-D silo, circular outlet" if variant == "silo" else f"monolayer (gap {P.GAP_2D:g} d), slit 2R"
+    ax.set(xlabel="t / t_d", ylabel="dN/dt  [particles per t_d]",
+           title=f"orifice-arch, {what}, {a.size} size: flow rate (1 t_d means); bands: Beverloo k = 3..1, C = 0.58")
+    ax.title.set_fontsize(9)
+    ax.legend(fontsize=8, loc="upper right")
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    gc.plots.save(fig, path)
+
+
+# ------------------------------------------------------------------ driver
+def check_run(c, r, variant):
+    s = r["summary"]
+    if variant == "silo":
+        c.within(f"{r['name']}: steady dN/dt in the Beverloo band k = 3..1 (C = 0.58) [1/s]", s["steady_rate_per_s"],
+                 r["bev"][3.0], r["bev"][1.0], "Beverloo (1961) for a circular orifice, the fill's bulk density; "
+                 "the monolayer's slit is reported only (Hagen-Beverloo has no established C, k for one layer)")
+    c.exact(f"{r['name']}: packed + re-inserted - present - removed at every count ({s['counts']} counts)",
+            int(np.max(np.abs(r["balance"]))), 0, "integer counts: no particle made or lost")
+    c.exact(f"{r['name']}: inserted = in silo + below the floor + removed at the end",
+            s["inserted"], s["in_silo"] + s["below_floor"] + s["removed_at_sink"], "integer counts")
+    c.true(f"{r['name']}: particles re-inserted and removed", s["reinserted"] > 0 and s["removed_at_sink"] > 0,
+           f"{s['reinserted']} re-inserted, {s['removed_at_sink']} removed", "the flow ran and was fed")
+
+
+def main():
+    ap = gc.cli.parser(__doc__, out_help="results (default: results/ for the study size, run/ for demo; test: required)")
+    ap.add_argument("--size", choices=list(P.SIZES), default="study")
+    ap.add_argument("--variant", nargs="+", choices=VARIANTS, default=list(VARIANTS))
+    ap.add_argument("--R", type=float, nargs="+", default=None, help="outlet radii [d] (default: the size's)")
+    ap.add_argument("--jobs", type=int, default=2, help="LIGGGHTS jobs at a time (default 2)")
+    ap.add_argument("--stage", choices=("all", "dem", "post"), default="all",
+                    help="dem: fills and runs only; post: only the study's tables and plots from finished runs")
+    ap.add_argument("--keep-dumps", action="store_true", help="keep the CG dumps after the fields are made")
+    ap.add_argument("--seed", type=int, default=1)
+    a = gc.cli.parse(ap, lambda o: ap.error(f"--size {o.size} needs --out") if o.size in ("test", "full")
+                     else os.path.join(HERE, "results" if o.size == "study" else "run"))
+    if a.np != 1:
+        ap.error("--np: the runs are serial LIGGGHTS jobs (use --jobs)")
+    t_start = time.time()
+    wanted = {var: [r for r in P.SIZES[a.size][var]["R"] if a.R is None or r in a.R] for var in a.variant}
+    for var, rs in wanted.items():
+        if a.R is not None and not rs:
+            ap.error(f"--R {a.R}: none of the {var} outlets {P.SIZES[a.size][var]['R']} of size {a.size}")
+    print(f"orifice-arch: size {a.size}, {', '.join(f'{k} R = {v}' for k, v in wanted.items())} d; out {a.out}",
+          flush=True)
+    if a.stage != "post":
+        fills = gc.runner.pool([(f"{var} fill", fill, (a, var)) for var in wanted], a.jobs, "orifice-arch")
+        if a.setup_only:
+            for var, rs in wanted.items():
+                for R_d in rs:
+                    discharge(a, var, R_d)
+            return print(f"orifice-arch: fill and run folders written to {os.path.join(a.out, 'runs')}")
+        for name, f in fills.items():
+            if not f.get("skipped"):
+                print(f"orifice-arch: {name} done", flush=True)
+        runs = gc.runner.pool([(run_name(var, R_d), discharge, (a, var, R_d)) for var, rs in wanted.items()
+                               for R_d in rs], a.jobs, "orifice-arch")
+    if a.stage == "dem":
+        return print(f"orifice-arch: DEM stage done ({time.time() - t_start:.0f} s)")
+    return post(a, wanted)
+
+
+def post(a, wanted):
+    """The study's tables, plots and checks from the finished runs."""
+    c = gc.checks.Checks(f"orifice-arch {a.size}")
+    keys, bev_rows = [], []
+    for var, rs in wanted.items():
+        results = {}
+        for R_d in rs:
+            case = os.path.join(a.out, "runs", var, f"R{R_d:g}")
+            results[R_d] = r = flow(a, var, R_d, case)
+            check_run(c, r, var)
+            if R_d in P.SIZES[a.size][var]["cg"]:
+                fields.check(c, a, var, R_d)
+        plot_flow(a, var, results, os.path.join(a.out, "flow_rate.png" if var == "silo" else "flow_rate_slab.png"))
+        g = geometry(a.size, var)
+        gap = 2 * g["half_gap"] if var == "slab" else None
+        C, k = beverloo_fit([(R_d * P.D, r["steady"] * P.MASS, r["summary"]["bulk_density_kg_m3"])
+                             for R_d, r in sorted(results.items())], gap)
+        for R_d, r in sorted(results.items()):
+            s = r["summary"]
+            bev_rows.append(dict(variant=var, R_over_d=R_d, rate_per_td=s["steady_rate_per_td"],
+                                 rate_se_per_td=s["steady_rate_se_per_s"] * P.T_D,
+                                 beverloo_k3_per_td=s["beverloo_k3_per_s"] * P.T_D,
+                                 beverloo_k1_per_td=s["beverloo_k1_per_s"] * P.T_D, k_at_C058=s["beverloo_k_at_C058"],
+                                 fit_C=C, fit_k=k, cpu_s=s["cpu_s"]))
+        keys += [(f"{var}_beverloo_fit_C", C), (f"{var}_beverloo_fit_k", k)]
+    gc.series.write_rows(os.path.join(a.out, "beverloo.csv"), bev_rows, fmt="{:.6g}")
+    arch = fields.summarise(a, wanted)
+    keys += arch
+    gc.series.write_keys(os.path.join(a.out, "summary.txt"), keys, f"orifice-arch {a.size} (study.py)")
+    c.report(enforce=a.check)
+
+
+if __name__ == "__main__":
+    gc.cli.main(main)
