@@ -4,10 +4,10 @@
     foam        OpenFOAM dictionaries and fields: read a field, set an entry, time folders
     template    the one template mechanism: a case's template/ with @KEY@ placeholders
     runner      run a step (log, mpirun, CPU time), a job pool, stop a run on a condition
-    dem         LIGGGHTS: loose packing, data files, STL walls, dumps, the discharge balance
+    dem         LIGGGHTS: loose packing, data files, STL walls, dumps, mesh VTK, the discharge balance
     series      time series: CSV in and out, window means, steady rates
     powder      the discharge of a silo or hopper: DEM and continuum runs to the level contract
-    closed_forms  Beverloo, Hagen-Beverloo, Crewdson, Carleton
+    closed_forms  Beverloo, Hagen-Beverloo, Crewdson, Carleton, Ergun, Wen & Yu, Janssen
     levels      level.json, the contract of `./granair compare` (docs/fidelity-levels.md)
     checks      a case's --check: named assertions with tolerances and reasons
     plots       matplotlib (Agg) helpers: figures, Beverloo bands, field panels
