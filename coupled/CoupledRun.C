@@ -2,13 +2,15 @@
     granair: CoupledRun (see CoupledRun.H for the coupling step)
 \*---------------------------------------------------------------------------*/
 #include "coupled/CoupledRun.H"
+#include "coupled/DemProcessorGrid.H"
 
+#include "core/CapacityBytes.hpp"
 #include "core/Error.hpp"
+#include "core/StopSignal.hpp"
+#include "monitor/Progress.hpp"
 
-#include <sys/resource.h>
-
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -21,178 +23,169 @@ namespace granair
 
 using ::granair::StageTimers;
 
-namespace
-{
-
-// Peak resident memory of this process [bytes]: VmHWM of /proc/self/status
-// (Linux); 0 where that file does not exist.
-double peakResidentBytes()
-{
-    std::ifstream in("/proc/self/status");
-    for (std::string line; std::getline(in, line);)
-    {
-        if (line.compare(0, 6, "VmHWM:") == 0)
-        {
-            return 1024.0*std::strtod(line.c_str() + 6, nullptr);   // given in kB
-        }
-    }
-    return 0;
-}
-
-// CPU time (user + system) of this process so far [s].
-double cpuSeconds()
-{
-    rusage u;
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_utime.tv_sec + 1e-6*u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6*u.ru_stime.tv_usec;
-}
-
-template<class T>
-double capacityBytes(const std::vector<T>& v)
-{
-    return double(v.capacity()*sizeof(T));
-}
-
-} // namespace
-
 CoupledRun::CoupledRun(Time& runTime, fvMesh& mesh)
 :
     runTime_(runTime),
     mesh_(mesh),
     dict_(::granair::Dictionary::fromFile(runTime.globalPath()/"constant"/"couplingProperties")),
-    settings_(::granair::CouplingSettings::read(dict_))
+    settings_(::granair::CouplingSettings::read(dict_)),
+    run_(::granair::RunSettings::read(dict_))
 {
-    const fileName caseDir = runTime.globalPath();
-    // DEM side: the case's LIGGGHTS script sets everything up, no run.
-    dem_ = std::make_unique<::granair::dem::LiggghtsDriver>(MPI_COMM_WORLD, caseDir/"log");
-    const std::string script = dict_.has("dem")
-        ? dict_.subDict("dem").getString("script", "dem/in.liggghts") : "dem/in.liggghts";
-    dem_->runFile(caseDir/script);
+    // Every reader of couplingProperties has read it (the monitors too):
+    // a key nobody asked for is a misspelling, stop before any work.
     if (settings_.airOn)
     {
-        dem_->enableFluidForces();
-    }
-    if (dict_.has("discharge"))
-    {
-        const ::granair::Dictionary& d = dict_.subDict("discharge");
-        const double zOut = d.getDouble("outletZ");
-        discharge_ = std::make_unique<::granair::dem::DischargeCounter>
-        (
-            *dem_, zOut, d.getDouble("sinkZ", zOut)
-        );
-        massFlow_ = std::make_unique<::granair::MassFlowRate>(d.getDouble("massFlowWindow", 1e-6, 1e6));
-        depthScale_ = d.getDouble("depthScale", 1.0);
-        if (!(depthScale_ > 0))
-        {
-            ::granair::fail<::granair::InputError>(d.where("depthScale"), ": expected a positive factor");
-        }
-    }
-
-    checkTimeSteps();
-    airSolverLog_ = dict_.getBool("airSolverLog", false);
-
-    // CFD side.
-    if (settings_.airOn)
-    {
-        air_ = std::make_unique<AirSolver>(mesh_);
-        locator_ = std::make_unique<FoamCellLocator>(mesh_);
-        exchange_ = std::make_unique<::granair::ParticleExchange>(MPI_COMM_WORLD, *locator_);
-        step_ = std::make_unique<::granair::CouplingStep>
-        (
-            settings_, *locator_, ::granair::FluidProperties{air_->rho(), air_->mu()}
-        );
         monitors_ = std::make_unique<MonitorSet>(mesh_, dict_);
-        // The coupling fields go to the time directories with U and p (only
-        // at the controlDict write times, so it costs nothing in between).
-        air_->Ksl().writeOpt() = IOobject::AUTO_WRITE;
-        air_->Us().writeOpt() = IOobject::AUTO_WRITE;
     }
     else
     {
-        // DEM only: the void fraction for the output, with the case's model.
-        locator_ = std::make_unique<FoamCellLocator>(mesh_);
-        exchange_ = std::make_unique<::granair::ParticleExchange>(MPI_COMM_WORLD, *locator_);
-        step_ = std::make_unique<::granair::CouplingStep>
-        (
-            settings_, *locator_, ::granair::FluidProperties{}
-        );
-        demVoidFraction_ = std::make_unique<volScalarField>
-        (
-            IOobject
-            (
-                "voidfraction", runTime_.timeName(), mesh_, IOobject::NO_READ, IOobject::AUTO_WRITE
-            ),
-            mesh_,
-            dimensionedScalar("one", dimless, 1.0),
-            "zeroGradient"
-        );
+        dict_.allow({"monitors"});   // air monitors: nothing to monitor
     }
-
-    // Time series.
-    std::vector<::granair::Column> cols{{"t", "s"}};
-    if (discharge_)
-    {
-        cols.push_back({"discharged_kg", "kg"});
-        cols.push_back({"mass_flow_kg_s", "kg/s"});
-    }
-    cols.push_back({"particles", "1"});
-    if (air_)
-    {
-        cols.push_back({"voidfraction_min", "1"});
-        cols.push_back({"voidfraction_floor_hits", "cells"});
-        cols.insert(cols.end(), monitors_->columns().begin(), monitors_->columns().end());
-    }
-    if (Pstream::master())
-    {
-        mkDir(caseDir/"postProcessing");
-    }
-    series_ = std::make_unique<::granair::TimeSeriesWriter>
-    (
-        MPI_COMM_WORLD, caseDir/"postProcessing"/"timeSeries", cols
-    );
-
-    // Particles for ParaView (fields: OpenFOAM's own writeControl).
-    if (dict_.has("output"))
-    {
-        const ::granair::Dictionary& d = dict_.subDict("output");
-        vtkInterval_ = d.getDouble("vtkInterval");
-        if (!(vtkInterval_ > 0) || !std::isfinite(vtkInterval_))
-        {
-            ::granair::fail<::granair::CollectiveError>
-            (
-                d.where("vtkInterval"), " = ", vtkInterval_,
-                ": expected a positive interval of simulated time [s]"
-            );
-        }
-        particleVtk_ = std::make_unique<::granair::ParticleVtkWriter>
-        (
-            MPI_COMM_WORLD, caseDir/"postProcessing"/"particles"
-        );
-    }
-
-    Info<< "granairFoam: " << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, "
-        << dem_->nGlobal() << " particles, " << Pstream::nProcs() << " rank(s)" << nl
-        << "  air " << (settings_.airOn ? "on" : "OFF (DEM-only reference run)")
-        << ", coupling interval " << settings_.couplingInterval << " DEM steps of "
-        << dem_->timestep() << " s";
-    if (settings_.airOn)
-    {
-        Info<< ", drag " << settings_.drag->name().c_str()
-            << ", void fraction " << settings_.voidFraction->name().c_str()
-            << ", coarse graining s = " << settings_.coarseGrainingFactor;
-    }
-    Info<< nl << "  " << nSteps_ << " coupling steps from t = " << tStart_ << " s to "
-        << runTime_.endTime().value() << " s" << nl;
-    if (particleVtk_)
-    {
-        Info<< "  particles to postProcessing/particles/particles.pvd every " << vtkInterval_
-            << " s" << nl;
-    }
-    Info<< endl;
+    dict_.checkKnownKeys();
+    restart_ = findRestart();
+    openDem();
+    checkTimeSteps();
+    openCfd();
+    openOutput();
+    printSummary();
 }
 
 
 CoupledRun::~CoupledRun() = default;
+
+
+bool CoupledRun::findRestart()
+{
+    const fileName caseDir = runTime_.globalPath();
+    const fileName dir = restartDirectory(caseDir, runTime_.timeName());
+    const double t = runTime_.value(), tol = 1e-6*runTime_.deltaTValue();
+    if (isFile(dir/"coupling"))
+    {
+        restartState_ = RestartState::read(dir/"coupling");
+        if (std::abs(restartState_.time - t) > tol)
+        {
+            ::granair::fail<::granair::CollectiveError>
+            (
+                "restart: ", dir/"coupling", " is the restart point of t = ", restartState_.time,
+                " s, but system/controlDict starts at t = ", t, " s (was the directory copied or renamed?)"
+            );
+        }
+        return true;
+    }
+    if (isDir(dir))
+    {
+        ::granair::fail<::granair::CollectiveError>
+        (
+            "restart: ", dir, " has no 'coupling' file: the restart point of t = ", t,
+            " s is incomplete (the run ended while writing it); start from an earlier write time"
+        );
+    }
+    // No restart point: a fresh start. One at a time an earlier run of this
+    // case passed would overwrite its time series and start the DEM from
+    // the script's particles, not those of that time.
+    std::ifstream csv(caseDir/"postProcessing"/"timeSeries.csv");
+    std::string line;
+    std::getline(csv, line);
+    bool first = true;
+    while (std::getline(csv, line))
+    {
+        const double tRow = std::strtod(line.c_str(), nullptr);
+        if (!first && std::abs(tRow - t) <= tol)
+        {
+            ::granair::fail<::granair::CollectiveError>
+            (
+                "system/controlDict starts at t = ", t, " s, a time an earlier run of this case passed ",
+                "(postProcessing/timeSeries.csv has a row there), but there is no restart point ", dir,
+                "/: granairFoam writes one with every field write time. Start from a time that has ",
+                "one (ls ", caseDir/"restart", "), or remove postProcessing/timeSeries.* to start afresh"
+            );
+        }
+        first = false;
+    }
+    return false;
+}
+
+
+void CoupledRun::openDem()
+{
+    // The case's LIGGGHTS script sets everything up, with no coupled run.
+    // A restart runs the restart script with ${granair_restart}, the
+    // LIGGGHTS restart file of the restart point (an index variable: a
+    // script's own `variable granair_restart index ...` does not override it).
+    const fileName caseDir = runTime_.globalPath();
+    dem_ = std::make_unique<::granair::dem::LiggghtsDriver>(MPI_COMM_WORLD, caseDir/"log");
+    if (restart_)
+    {
+        dem_->command
+        (
+            "variable granair_restart index "
+          + restartDirectory(caseDir, runTime_.timeName()) + "/dem.restart"
+        );
+    }
+    // LIGGGHTS' processor grid follows the CFD decomposition (a script's
+    // own `processors` command comes later and wins).
+    const DemProcessorGrid grid(runTime_);
+    if (!grid.command().empty())
+    {
+        dem_->command(grid.command());
+    }
+    dem_->runFile(caseDir/(restart_ ? run_.demRestartScript : run_.demScript));
+    if (restart_)
+    {
+        checkRestartedDem();
+        dem_->alignTime(restartState_.demTime);
+    }
+    // The fluid force and discharge state fixes: after a restart they take
+    // their per-particle values back from LIGGGHTS' restart file.
+    if (settings_.airOn)
+    {
+        dem_->enableFluidForces();
+    }
+    if (run_.discharge)
+    {
+        const ::granair::DischargeSettings& d = *run_.discharge;
+        discharge_ = std::make_unique<::granair::dem::DischargeCounter>(*dem_, d.outletZ, d.sinkZ);
+        massFlow_ = std::make_unique<::granair::MassFlowRate>(d.massFlowWindow);
+        if (restart_)
+        {
+            if (!restartState_.discharge)
+            {
+                ::granair::fail<::granair::CollectiveError>
+                (
+                    "restart at t = ", runTime_.value(), " s: constant/couplingProperties has a discharge ",
+                    "counter, the restart point has none (the case was changed)"
+                );
+            }
+            discharge_->restore(restartState_.balance, restartState_.maxTagSeen);
+            massFlow_->restore(restartState_.massFlow);
+        }
+    }
+    if (restart_)
+    {
+        // The global totals so far, held by rank 0 (the end report sums).
+        floorHitsTotal_ = Pstream::master() ? restartState_.floorHitsTotal : 0;
+        minRawEps_ = restartState_.minRawVoidFraction;
+    }
+}
+
+
+void CoupledRun::checkRestartedDem() const
+{
+    const RestartState& s = restartState_;
+    const std::int64_t n = dem_->nGlobal();
+    if (dem_->step() != s.demStep || n != s.particles)
+    {
+        ::granair::fail<::granair::CollectiveError>
+        (
+            "restart: DEM and CFD times do not match. The CFD starts at t = ", s.time, " s, whose restart point ",
+            restartDirectory(runTime_.globalPath(), s.timeName), "/coupling has LIGGGHTS at step ", s.demStep,
+            " (t_DEM = ", s.demTime, " s) with ", s.particles, " particles; after the restart script ",
+            run_.demRestartScript, " LIGGGHTS is at step ", dem_->step(), " (t_DEM = ", dem_->time(), " s) with ",
+            n, " particles. The restart script must read the restart point's particles: ",
+            "`read_restart ${granair_restart}` (docs/case-format.md, Restart)"
+        );
+    }
+}
 
 
 void CoupledRun::checkTimeSteps()
@@ -223,6 +216,98 @@ void CoupledRun::checkTimeSteps()
 }
 
 
+void CoupledRun::openCfd()
+{
+    locator_ = std::make_unique<FoamCellLocator>(mesh_);
+    exchange_ = std::make_unique<::granair::ParticleExchange>(MPI_COMM_WORLD, *locator_);
+    if (settings_.airOn)
+    {
+        air_ = std::make_unique<AirSolver>(mesh_);
+        step_ = std::make_unique<::granair::CouplingStep>
+        (
+            settings_, *locator_, ::granair::FluidProperties{air_->rho(), air_->mu()}
+        );
+        // The coupling fields go to the time directories with U and p (only
+        // at the controlDict write times, so it costs nothing in between).
+        air_->Ksl().writeOpt() = IOobject::AUTO_WRITE;
+        air_->Us().writeOpt() = IOobject::AUTO_WRITE;
+        return;
+    }
+    // DEM only: the void fraction for the output, with the case's model.
+    step_ = std::make_unique<::granair::CouplingStep>(settings_, *locator_, ::granair::FluidProperties{});
+    demVoidFraction_ = std::make_unique<volScalarField>
+    (
+        IOobject("voidfraction", runTime_.timeName(), mesh_, IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh_,
+        dimensionedScalar("one", dimless, 1.0),
+        "zeroGradient"
+    );
+}
+
+
+void CoupledRun::openOutput()
+{
+    const fileName caseDir = runTime_.globalPath();
+    if (Pstream::master())
+    {
+        mkDir(caseDir/"postProcessing");
+    }
+    ::granair::StepSeries::Layout layout;
+    layout.discharge = bool(discharge_);
+    layout.air = bool(air_);
+    if (monitors_)
+    {
+        layout.monitorColumns = monitors_->columns();
+    }
+    // A restart continues the series after the rows up to its time.
+    series_ = std::make_unique<::granair::StepSeries>
+    (
+        MPI_COMM_WORLD, caseDir/"postProcessing"/"timeSeries", layout,
+        restart_ ? restartState_.seriesRows : -1
+    );
+    // Particles for ParaView (fields: OpenFOAM's own writeControl).
+    vtkOrigin_ = restart_ ? restartState_.vtkOrigin : tStart_;
+    if (run_.vtkInterval > 0)
+    {
+        particleVtk_ = std::make_unique<::granair::ParticleVtkWriter>
+        (
+            MPI_COMM_WORLD, caseDir/"postProcessing"/"particles"
+        );
+        if (restart_)
+        {
+            particleVtk_->resume(restartState_.vtkTimes);
+            vtkNext_ = label(restartState_.vtkNext);
+        }
+    }
+}
+
+
+void CoupledRun::printSummary() const
+{
+    Info<< "granairFoam: " << returnReduce(mesh_.nCells(), sumOp<label>()) << " cells, "
+        << dem_->nGlobal() << " particles, " << Pstream::nProcs() << " rank(s)" << nl
+        << "  air " << (settings_.airOn ? "on" : "OFF (DEM-only reference run)")
+        << ", coupling interval " << settings_.couplingInterval << " DEM steps of "
+        << dem_->timestep() << " s";
+    if (settings_.airOn)
+    {
+        Info<< ", drag " << settings_.drag->name().c_str()
+            << ", void fraction " << settings_.voidFraction->name().c_str()
+            << ", coarse graining s = " << settings_.coarseGrainingFactor;
+    }
+    Info<< nl << "  " << nSteps_ << " coupling steps from t = " << tStart_ << " s to "
+        << runTime_.endTime().value() << " s" << nl;
+    if (particleVtk_)
+    {
+        Info<< "  particles to postProcessing/particles/particles.pvd every " << run_.vtkInterval
+            << " s" << nl;
+    }
+    DemProcessorGrid(runTime_).report(*dem_);
+    DemProcessorGrid::checkNeighbourBins(*dem_);
+    Info<< endl;
+}
+
+
 void CoupledRun::mapParticles()
 {
     {
@@ -231,6 +316,19 @@ void CoupledRun::mapParticles()
     }
     StageTimers::Scope s(timers_, StageTimers::Mapping);
     const double* U = reinterpret_cast<const double*>(air_->U().primitiveField().cdata());
+    if (settings_.oneWay)
+    {
+        // The air keeps eps = 1, Ksl = 0, Us = 0 (its initial values).
+        const std::size_t n = std::size_t(mesh_.nCells());
+        particleEps_.resize(n);
+        particleKsl_.resize(n);
+        particleUs_.resize(3*n);
+        step_->particlesToCells
+        (
+            owned_, U, particleEps_.data(), particleKsl_.data(), particleUs_.data()
+        );
+        return;
+    }
     step_->particlesToCells
     (
         owned_, U,
@@ -264,23 +362,23 @@ volScalarField& CoupledRun::voidFraction()
 }
 
 
-void CoupledRun::coupleAir()
+void CoupledRun::solveAir()
 {
-    mapParticles();
-    floorHitsTotal_ += step_->stats().floorHits;
-    minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
+    StageTimers::Scope s(timers_, StageTimers::CFD);
+    // OpenFOAM's per-iteration solver lines would drown the progress
+    // line; `airSolverLog on;` in couplingProperties keeps them.
+    const int level = messageStream::level;
+    if (!run_.airSolverLog)
     {
-        StageTimers::Scope s(timers_, StageTimers::CFD);
-        // OpenFOAM's per-iteration solver lines would drown the progress
-        // line; `airSolverLog on;` in couplingProperties keeps them.
-        const int level = messageStream::level;
-        if (!airSolverLog_)
-        {
-            messageStream::level = 0;
-        }
-        air_->solveStep();
-        messageStream::level = level;
+        messageStream::level = 0;
     }
+    air_->solveStep();
+    messageStream::level = level;
+}
+
+
+void CoupledRun::forcesToDem()
+{
     {
         StageTimers::Scope s(timers_, StageTimers::Mapping);
         // The air's own pressure gradient (Gauss on its face pressure): at a
@@ -304,11 +402,20 @@ void CoupledRun::coupleAir()
 }
 
 
+void CoupledRun::coupleAir()
+{
+    mapParticles();
+    floorHitsTotal_ += step_->stats().floorHits;
+    minRawEps_ = std::min(minRawEps_, step_->stats().minRawVoidFraction);
+    solveAir();
+    forcesToDem();
+}
+
+
 void CoupledRun::run()
 {
     ::granair::Progress progress(tStart_, runTime_.endTime().value());
-    const double loopStart = MPI_Wtime();
-    const double cpuStart = cpuSeconds();
+    resources_.startLoop();
     double massFlow = 0;
     {
         StageTimers::Scope s(timers_, StageTimers::DEM);
@@ -321,24 +428,33 @@ void CoupledRun::run()
     // pressure kick many times the particles' weight. It is written to the
     // start time directory (replacing any 0/voidfraction given): the bed
     // the run starts from, in the same model and floor as every later field.
+    //   With the air on, the particles also get their fluid force from the
+    // initial air fields now, for the first interval of DEM steps. At a
+    // restart they have it already (LIGGGHTS' restart file: the force the
+    // run computed at this time), and the start time's outputs exist.
     if (air_)
     {
         mapParticles();
+        if (!restart_)
+        {
+            forcesToDem();
+        }
     }
     else
     {
         mapVoidFraction();
     }
+    if (!restart_)
     {
         StageTimers::Scope s(timers_, StageTimers::Output);
         voidFraction().write();
+        if (particleVtk_)
+        {
+            writeParticles(0);
+        }
     }
-    if (particleVtk_)
-    {
-        StageTimers::Scope s(timers_, StageTimers::Output);
-        writeParticles(0);
-    }
-    for (label k = 1; k <= nSteps_; ++k)
+    stopSignal_ = ::granair::StopSignal::received(MPI_COMM_WORLD);
+    for (label k = 1; k <= nSteps_ && !stopSignal_; ++k)
     {
         {
             StageTimers::Scope s(timers_, StageTimers::DEM);
@@ -358,12 +474,12 @@ void CoupledRun::run()
             StageTimers::Scope s(timers_, StageTimers::Output);
             if (discharge_)
             {
-                massFlow = depthScale_*massFlow_->add
+                massFlow = run_.discharge->depthScale*massFlow_->add
                 (
                     runTime_.value(), discharge_->balance().dischargedMass
                 );
             }
-            writeRow(runTime_.value(), massFlow);
+            series_->append(record(massFlow));
             if (!air_ && runTime_.writeTime())
             {
                 mapVoidFraction();
@@ -373,14 +489,110 @@ void CoupledRun::run()
             {
                 writeParticles(k);
             }
+            if (runTime_.writeTime())
+            {
+                writeRestartPoint();
+            }
         }
-        const double nParticles = lastRow_.at(discharge_ ? 3 : 1);
-        particleSteps_ += nParticles*settings_.couplingInterval;
-        peakParticles_ = std::max(peakParticles_, nParticles);
-        progress.update(runTime_.value(), long(dem_->step()), progressExtra(massFlow), std::cout, k == nSteps_);
+        resources_.addStep(series_->last().particles, settings_.couplingInterval);
+        stepsDone_ = k;
+        stopSignal_ = ::granair::StopSignal::received(MPI_COMM_WORLD);
+        progress.update
+        (
+            runTime_.value(), long(dem_->step()), progressExtra(series_->last()), std::cout,
+            k == nSteps_ || stopSignal_
+        );
     }
-    loopSeconds_ = MPI_Wtime() - loopStart;
-    loopCpuSeconds_ = cpuSeconds() - cpuStart;
+    if (stopSignal_)
+    {
+        writeStopPoint();
+    }
+    resources_.stopLoop();
+}
+
+
+void CoupledRun::writeStopPoint()
+{
+    StageTimers::Scope s(timers_, StageTimers::Output);
+    if (!runTime_.writeTime())
+    {
+        if (!air_)
+        {
+            mapVoidFraction();
+        }
+        runTime_.writeNow();
+        writeRestartPoint();
+    }
+}
+
+
+void CoupledRun::writeRestartPoint()
+{
+    const fileName caseDir = runTime_.globalPath();
+    const fileName dir = restartDirectory(caseDir, runTime_.timeName());
+    if (Pstream::master())
+    {
+        mkDir(dir);
+    }
+    // LIGGGHTS writes it from its rank 0 (this process's rank 0 made the
+    // directory); it re-initialises, so the next advance is a full setup.
+    dem_->command("write_restart " + dir + "/dem.restart");
+    RestartState s;
+    s.time = runTime_.value();
+    s.timeName = runTime_.timeName();
+    s.demStep = dem_->step();
+    s.demTime = dem_->time();
+    s.particles = dem_->nGlobal();
+    s.seriesRows = series_->rows();
+    s.vtkOrigin = vtkOrigin_;
+    s.vtkNext = long(vtkNext_);
+    if (particleVtk_)
+    {
+        s.vtkTimes = particleVtk_->times();
+    }
+    if (discharge_)
+    {
+        s.discharge = true;
+        s.balance = discharge_->balance();
+        s.maxTagSeen = discharge_->maxTagSeen();
+        s.massFlow = massFlow_->history();
+    }
+    // floorHitsTotal_ and minRawEps_ are this rank's: the state holds the
+    // global ones (a restart gives the total to rank 0).
+    s.floorHitsTotal = returnReduce(label(floorHitsTotal_), sumOp<label>());
+    s.minRawVoidFraction = returnReduce(minRawEps_, minOp<scalar>());
+    if (Pstream::master())
+    {
+        s.write(dir/"coupling");   // last: marks the restart point complete
+    }
+    purgeRestartPoints();
+}
+
+
+void CoupledRun::purgeRestartPoints() const
+{
+    // As OpenFOAM's purgeWrite N keeps the last N time directories.
+    const label keep = runTime_.controlDict().lookupOrDefault<label>("purgeWrite", 0);
+    if (keep <= 0 || !Pstream::master())
+    {
+        return;
+    }
+    const fileName root = runTime_.globalPath()/"restart";
+    fileNameList dirs = readDir(root, fileName::DIRECTORY);
+    std::vector<std::pair<scalar, fileName>> times;
+    for (const fileName& d : dirs)
+    {
+        scalar t;
+        if (readScalar(d, t))
+        {
+            times.emplace_back(t, d);
+        }
+    }
+    std::sort(times.begin(), times.end());
+    for (std::size_t k = 0; k + std::size_t(keep) < times.size(); ++k)
+    {
+        rmDir(root/times[k].second);
+    }
 }
 
 
@@ -390,54 +602,76 @@ void CoupledRun::writeParticles(label k)
     // end; the tolerance absorbs the round-off of the accumulated time.
     const double t = runTime_.value();
     const double tol = 1e-6*runTime_.deltaTValue();
-    if (k > 0 && k < nSteps_ && t < tStart_ + vtkNext_*vtkInterval_ - tol)
+    if (k > 0 && k < nSteps_ && t < vtkOrigin_ + vtkNext_*run_.vtkInterval - tol)
     {
         return;
     }
-    // The fluid force of this coupling step (zero at the start and with the
-    // air off), in the order of particles_.
-    const bool haveForces = air_ && k > 0 && demForces_.size() == 3*particles_.size();
+    // The fluid force of this coupling step (at the start: from the initial
+    // air; zero with the air off), in the order of particles_.
+    const bool haveForces = air_ && demForces_.size() == 3*particles_.size();
     particleVtk_->write(t, particles_, haveForces ? demForces_.data() : nullptr, particles_.size());
-    vtkNext_ = label(std::floor((t - tStart_ + tol)/vtkInterval_)) + 1;
+    vtkNext_ = label(std::floor((t - vtkOrigin_ + tol)/run_.vtkInterval)) + 1;
 }
 
 
-void CoupledRun::writeRow(double t, double massFlow)
+::granair::StepRecord CoupledRun::record(double massFlow) const
 {
-    std::vector<double> row{t};
+    ::granair::StepRecord r;
+    r.t = runTime_.value();
     if (discharge_)
     {
-        row.push_back(depthScale_*discharge_->balance().dischargedMass);
-        row.push_back(massFlow);
+        r.dischargedKg = run_.discharge->depthScale*discharge_->balance().dischargedMass;
+        r.massFlowKgS = massFlow;
     }
-    row.push_back(double(dem_->nGlobal()));
+    r.particles = double(dem_->nGlobal());
     if (air_)
     {
-        double epsMin = gMin(air_->eps().primitiveField());
-        label hits = returnReduce(label(step_->stats().floorHits), sumOp<label>());
-        row.push_back(epsMin);
-        row.push_back(double(hits));
-        monitors_->values(*air_, row);
+        r.voidFractionMin = settings_.oneWay
+            ? returnReduce
+              (
+                  particleEps_.empty()
+                ? 1.0 : *std::min_element(particleEps_.begin(), particleEps_.end()),
+                  minOp<scalar>()
+              )
+            : gMin(air_->eps().primitiveField());
+        r.floorHits = double(returnReduce(label(step_->stats().floorHits), sumOp<label>()));
+        monitors_->values(*air_, r.monitors);
     }
-    series_->append(row);
-    lastRow_ = row;
+    return r;
 }
 
 
-std::string CoupledRun::progressExtra(double massFlow) const
+std::string CoupledRun::progressExtra(const ::granair::StepRecord& r) const
 {
     std::ostringstream os;
     os.precision(4);
-    os << "particles " << lastRow_.at(discharge_ ? 3 : 1);
+    os << "particles " << r.particles;
     if (discharge_)
     {
-        os << " | discharged " << lastRow_[1] << " kg | W " << massFlow << " kg/s";
+        os << " | discharged " << r.dischargedKg << " kg | W " << r.massFlowKgS << " kg/s";
     }
     if (air_)
     {
-        os << " | min eps " << lastRow_.at(discharge_ ? 4 : 2);
+        os << " | min eps " << r.voidFractionMin;
     }
     return os.str();
+}
+
+
+::granair::ResourceUsage::Buffers CoupledRun::bufferBytes() const
+{
+    using ::granair::capacityBytes;
+    ::granair::ResourceUsage::Buffers b;
+    b.run = double
+    (
+        capacityBytes(particles_) + owned_.bufferBytes() + capacityBytes(ownedForces_)
+      + capacityBytes(demForces_)
+    );
+    b.exchange = double(exchange_->bufferBytes());
+    b.stepParticles = double(step_->particleBufferBytes());
+    b.stepCells = double(step_->cellBufferBytes());
+    b.cells = double(mesh_.nCells());
+    return b;
 }
 
 
@@ -458,71 +692,18 @@ void CoupledRun::finish()
             << "Air continuity error (cumulative): " << air_->cumulativeContinuityError() << "\n";
     }
     timers_.report(MPI_COMM_WORLD, os);
-    reportMemory(os);
-    Info<< os.str().c_str() << endl;
-}
-
-
-void CoupledRun::reportMemory(std::ostream& os) const
-{
-    // The coupling loop alone (the timing table above includes the set-up).
-    double loop = loopSeconds_;
-    MPI_Allreduce(MPI_IN_PLACE, &loop, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    char line[256];
-    std::snprintf
-    (
-        line, sizeof line,
-        "Coupling loop: %.3f s wall for %ld coupling steps, %.4g particle-steps, %.4g particle-steps/s\n",
-        loop, long(nSteps_), particleSteps_, loop > 0 ? particleSteps_/loop : 0.0
-    );
-    os << line;
-    // CPU time is less disturbed than wall time by other load on the machine
-    // (not by a rank waiting, busy, for a descheduled one).
-    double cpu[2] = {loopCpuSeconds_, loopCpuSeconds_};
-    MPI_Allreduce(MPI_IN_PLACE, &cpu[0], 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    MPI_Allreduce(MPI_IN_PLACE, &cpu[1], 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-    std::snprintf
-    (
-        line, sizeof line,
-        "Coupling loop CPU time (user + system): %.3f s on the busiest rank, %.3f s on all ranks\n",
-        cpu[0], cpu[1]
-    );
-    os << line;
-
-    // Peak resident memory, and what the coupling layer's own buffers hold
-    // (vector capacities = their high-water marks; OpenFOAM's extra fields
-    // voidfraction, Ksl, Us and LIGGGHTS' fluid-force arrays not included).
-    const double hwm = peakResidentBytes();
-    double hwmMax = hwm;
-    MPI_Allreduce(MPI_IN_PLACE, &hwmMax, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    double sums[6] =
+    resources_.report(MPI_COMM_WORLD, long(stepsDone_), bufferBytes(), os);
+    if (stopSignal_)
     {
-        hwm,
-        capacityBytes(particles_) + capacityBytes(owned_) + capacityBytes(ownedForces_)
-      + capacityBytes(demForces_),
-        exchange_ ? double(exchange_->bufferBytes()) : 0.0,
-        step_ ? double(step_->particleBufferBytes()) : 0.0,
-        step_ ? double(step_->cellBufferBytes()) : 0.0,
-        double(mesh_.nCells())
-    };
-    MPI_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-    const double mib = 1024.0*1024.0;
-    std::snprintf
-    (
-        line, sizeof line, "Peak memory (VmHWM): %.1f MiB on the largest rank, %.1f MiB on all %d rank(s)\n",
-        hwmMax/mib, sums[0]/mib, Pstream::nProcs()
-    );
-    os << line;
-    const double np = std::max(peakParticles_, 1.0), nc = std::max(sums[5], 1.0);
-    std::snprintf
-    (
-        line, sizeof line,
-        "Coupling buffers (all ranks): %.1f B/particle (run %.1f, exchange %.1f, coupling step %.1f) "
-        "for %.0f particles; %.1f B/cell for %.0f cells\n",
-        (sums[1] + sums[2] + sums[3])/np, sums[1]/np, sums[2]/np, sums[3]/np, peakParticles_,
-        sums[4]/nc, sums[5]
-    );
-    os << line;
+        os  << "\ngranairFoam: stopped by " << ::granair::StopSignal::name(stopSignal_) << " at t = "
+            << runTime_.value() << " s, after coupling step " << stepsDone_ << " of " << nSteps_
+            << " (end time " << runTime_.endTime().value() << " s).\n"
+            << "  The outputs are complete up to that time: postProcessing/timeSeries.{csv,h5} have every "
+            << "step to t = " << runTime_.value() << " s, and the fields and a restart point of t = "
+            << runTime_.timeName() << " are written: continue with startFrom latestTime.\n"
+            << "  Exit code " << ::granair::StopSignal::exitCode(stopSignal_) << ".\n";
+    }
+    Info<< os.str().c_str() << endl;
 }
 
 } // namespace granair

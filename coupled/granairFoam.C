@@ -9,6 +9,10 @@ Description
     Usage:  mpirun -np N granairFoam -case <dir> -parallel
             granairFoam -case <dir>                  (serial)
 
+    SIGTERM or SIGINT (Ctrl-C, or a batch system's kill) stop the run after
+    the coupling step in hand: its fields are written, the time series is
+    complete up to it, and the exit code is 143 (SIGTERM) or 130 (SIGINT).
+
     Errors: an error every rank meets (bad input every rank reads, or one
     raised collectively) is printed once and the job ends with exit code 1;
     an error on some ranks only aborts the whole job (MPI_Abort), so no rank
@@ -20,6 +24,7 @@ Description
 
 #include "coupled/CoupledRun.H"
 #include "core/ErrorExit.hpp"
+#include "core/StopSignal.hpp"
 
 #include <mpi.h>
 #include <iostream>
@@ -38,15 +43,24 @@ int main(int argc, char* argv[])
 
     // Created before anything can fail: see ErrorExit.hpp.
     ::granair::ErrorExit errorExit(MPI_COMM_WORLD);
+    // SIGTERM / SIGINT: finish the coupling step, write, exit 128 + signal.
+    ::granair::StopSignal stop;
+    int stopSignal = 0;
     try
     {
         Foam::granair::CoupledRun run(runTime, mesh);
         run.run();
         run.finish();
+        stopSignal = run.stopSignal();
     }
     catch (const std::exception& e)
     {
         errorExit.fail("granairFoam", e.what());
+    }
+    if (stopSignal)
+    {
+        // After LIGGGHTS is closed (CoupledRun's destructor, collective).
+        ::granair::finaliseAndExit(MPI_COMM_WORLD, ::granair::StopSignal::exitCode(stopSignal));
     }
     Info<< "End" << nl << endl;
     return 0;

@@ -126,6 +126,11 @@ void DischargeCounter::update() {
     maxTagSeen_ = std::max<std::int64_t>(maxTagSeen_, globalMaxTag);
 }
 
+void DischargeCounter::restore(const DischargeBalance& balance, std::int64_t maxTagSeen) {
+    balance_ = balance;
+    maxTagSeen_ = maxTagSeen;
+}
+
 void DischargeCounter::report(std::ostream& os) const {
     if (driver_.rank() != 0) return;
     const DischargeBalance& b = balance_;

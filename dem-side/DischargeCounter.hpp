@@ -53,6 +53,11 @@ public:
     void update();
 
     const DischargeBalance& balance() const { return balance_; }
+    // A restart: the counts up to the restart point (the per-particle
+    // states come back with LIGGGHTS' restart file). maxTagSeen: the largest
+    // tag seen so far (for the reused-tag count).
+    void restore(const DischargeBalance& balance, std::int64_t maxTagSeen);
+    std::int64_t maxTagSeen() const { return maxTagSeen_; }
     double zOutlet() const { return zOutlet_; }
     double zSink() const { return zSink_; }
 

@@ -1,6 +1,7 @@
 // LiggghtsDriver.cpp: see LiggghtsDriver.hpp.
 #include "LiggghtsDriver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,11 +12,13 @@
 #include "FluidForceStore.hpp"
 #include "ScreenErrorEcho.hpp"
 #include "atom.h"
+#include "comm.h"
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
 #include "domain.h"
 #include "lammps.h"
 #include "library.h"
+#include "neighbor.h"
 #include "universe.h"
 #include "update.h"
 
@@ -33,6 +36,13 @@ void requireSpheres(const LAMMPS_NS::Atom& atom) {
         fail<InputError>("LIGGGHTS atom style has no per-particle radius and mass: the DEM "
                          "script must use `atom_style granular` (or sphere)");
 }
+
+// Neighbor's user bin size is protected; a pointer to member taken through
+// a derived class reads it without touching anything else.
+struct NeighborInternals : LAMMPS_NS::Neighbor {
+    static bool userBinSize(const LAMMPS_NS::Neighbor& n) { return n.*(&NeighborInternals::binsizeflag) != 0; }
+    static double binSize(const LAMMPS_NS::Neighbor& n) { return n.*(&NeighborInternals::binsize_user); }
+};
 
 bool writable(const std::string& path) {
     std::FILE* f = std::fopen(path.c_str(), "a");
@@ -129,7 +139,16 @@ double LiggghtsDriver::timestep() const { return lmp_->update->dt; }
 
 std::int64_t LiggghtsDriver::step() const { return lmp_->update->ntimestep; }
 
-double LiggghtsDriver::time() const { return lmp_->update->get_cur_time(); }
+double LiggghtsDriver::time() const {
+    return aligned_ ? alignedTime_ + static_cast<double>(step() - alignedStep_) * timestep()
+                    : lmp_->update->get_cur_time();
+}
+
+void LiggghtsDriver::alignTime(double t) {
+    aligned_ = true;
+    alignedTime_ = t;
+    alignedStep_ = step();
+}
 
 std::int64_t LiggghtsDriver::nGlobal() const {
     // Not atom->natoms: LIGGGHTS only refreshes it at thermo output when atoms
@@ -251,6 +270,50 @@ void LiggghtsDriver::getParticleMasses(std::vector<double>& out) const {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     requireSpheres(atom);
     out.assign(atom.rmass, atom.rmass + atom.nlocal);
+}
+
+std::array<int, 3> LiggghtsDriver::processorGrid() const {
+    const LAMMPS_NS::Comm& c = *lmp_->comm;
+    return {c.procgrid[0], c.procgrid[1], c.procgrid[2]};
+}
+
+std::vector<std::int64_t> LiggghtsDriver::particlesPerRank() const {
+    int size = 1;
+    MPI_Comm_size(comm_, &size);
+    long long mine = lmp_->atom->nlocal;
+    std::vector<long long> all(static_cast<std::size_t>(size));
+    MPI_Allgather(&mine, 1, MPI_LONG_LONG, all.data(), 1, MPI_LONG_LONG, comm_);
+    return std::vector<std::int64_t>(all.begin(), all.end());
+}
+
+LiggghtsDriver::NeighbourBins LiggghtsDriver::neighbourBins() const {
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    double rmax = 0;
+    if (atom.radius)
+        for (int i = 0; i < atom.nlocal; ++i) rmax = std::max(rmax, atom.radius[i]);
+    MPI_Allreduce(MPI_IN_PLACE, &rmax, 1, MPI_DOUBLE, MPI_MAX, comm_);
+    const LAMMPS_NS::Neighbor& n = *lmp_->neighbor;
+    NeighbourBins b;
+    b.cutoff = 2 * rmax + n.skin;
+    b.userBinSize = NeighborInternals::userBinSize(n);
+    b.binSize = b.userBinSize ? NeighborInternals::binSize(n) : 0.5 * b.cutoff;
+    double bins = 0;
+    if (b.binSize > 0) {
+        bins = 1;
+        const LAMMPS_NS::Domain& d = *lmp_->domain;
+        for (int a = 0; a < 3; ++a) bins *= std::ceil((d.subhi[a] - d.sublo[a] + 2 * b.cutoff) / b.binSize);
+    }
+    struct {
+        double bins;
+        int rank;
+    } mine{bins, rank_}, most{};
+    MPI_Allreduce(&mine, &most, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_);
+    b.bins = most.bins;
+    b.rank = most.rank;
+    long long there = rank_ == most.rank ? atom.nlocal : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &there, 1, MPI_LONG_LONG, MPI_SUM, comm_);
+    b.particlesThere = there;
+    return b;
 }
 
 }  // namespace granair::dem

@@ -13,6 +13,7 @@
 #pragma once
 #include <mpi.h>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -52,6 +53,10 @@ public:
     double timestep() const;  // [s]
     std::int64_t step() const;
     double time() const;  // simulated time [s]
+    // After a read_restart LIGGGHTS 3.8 does not carry on its simulated time
+    // (the step number it keeps): from now on time() is t [s] plus the steps
+    // since, times the timestep.
+    void alignTime(double t);
     std::int64_t nGlobal() const;  // particles on all ranks. Collective.
     int nLocal() const;  // particles owned by this rank
 
@@ -84,6 +89,25 @@ public:
     // until the next command or advance).
     void getParticleMasses(std::vector<double>& out) const;
 
+    // LIGGGHTS' processor grid (procs along x, y, z), once the box exists.
+    std::array<int, 3> processorGrid() const;
+    // Particles on each rank (index = rank). Collective.
+    std::vector<std::int64_t> particlesPerRank() const;
+
+    // What LIGGGHTS' neighbour binning will allocate on the busiest rank:
+    // bins of binSize (neigh_modify binsize, or half the neighbour cutoff
+    // 2 r_max + skin) over this rank's subdomain plus the ghost shell.
+    struct NeighbourBins {
+        double cutoff = 0;    // 2 r_max + skin [m]
+        double binSize = 0;   // [m]
+        bool userBinSize = false;
+        double bins = 0;      // on the rank with the most
+        int rank = 0;         // that rank
+        std::int64_t particlesThere = 0;
+    };
+    // Collective.
+    NeighbourBins neighbourBins() const;
+
     MPI_Comm comm() const { return comm_; }
     int rank() const { return rank_; }
     const std::string& logDir() const { return logDir_; }
@@ -101,6 +125,9 @@ private:
     std::FILE* screen_ = nullptr;  // the echoing screen stream we installed
     std::unique_ptr<FluidForceStore> forces_;
     bool needsSetup_ = true;  // a command ran since the last full setup
+    bool aligned_ = false;    // alignTime() was called
+    double alignedTime_ = 0;  // time [s] at step alignedStep_
+    std::int64_t alignedStep_ = 0;
     std::vector<int> lastTags_;  // tags in the order of the last getParticles
 };
 

@@ -27,7 +27,7 @@ LAMMPS_NS::Fix* ensurePropertyAtom(LAMMPS_NS::LAMMPS* lmp, const std::string& id
         std::ostringstream cmd;
         cmd.precision(17);
         cmd << "fix " << id << " all property/atom " << id << (columns == 1 ? " scalar" : " vector")
-            << " no no no";
+            << " yes no no";  // restart yes, no ghost communication
         for (int c = 0; c < columns; ++c) cmd << ' ' << defaultValue;
         lammps_command(lmp, cmd.str().c_str());
         fix = findFix(lmp, id, "property/atom");

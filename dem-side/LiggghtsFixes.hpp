@@ -14,11 +14,14 @@ namespace granair::dem {
 // if it exists with another style (the script reused one of our ids).
 LAMMPS_NS::Fix* findFix(LAMMPS_NS::LAMMPS* lmp, const std::string& id, const std::string& style);
 
-// Ensure `fix <id> all property/atom <id> <scalar|vector> no no no <defaults>`
+// Ensure `fix <id> all property/atom <id> <scalar|vector> yes no no <defaults>`
 // exists (columns 1: scalar, else vector of that many values, all defaulting
 // to `defaultValue`), creating it if missing, and return it. New particles
 // get the default (LIGGGHTS calls the fix's set_arrays on creation), the
-// value moves with the particle between ranks. Collective.
+// value moves with the particle between ranks and goes into restart files
+// (`yes`): defined again after a read_restart, the fix takes the values
+// back (LAMMPS' Modify::add_fix restores per-atom restart data of a fix
+// with the same id and style). Collective.
 LAMMPS_NS::Fix* ensurePropertyAtom(LAMMPS_NS::LAMMPS* lmp, const std::string& id, int columns,
                                    double defaultValue);
 

@@ -3,7 +3,9 @@
 
 #include <stdio.h>  // fopencookie (glibc)
 
+#include <chrono>
 #include <string>
+#include <thread>
 
 namespace granair::dem {
 
@@ -32,6 +34,12 @@ void echo(const EchoState& s, const std::string& line) {
                                  : "LIGGGHTS calls MPI_Abort";
     std::fprintf(stderr, "LIGGGHTS error: %s (%s)\n", line.c_str(), where.c_str());
     std::fflush(stderr);
+    // Under mpirun the line travels through a pipe to mpirun, which stops
+    // forwarding output once a rank has exited with an error or aborted:
+    // LIGGGHTS' next moves (MPI_Abort, or exit(1) on the other ranks once
+    // this one reaches MPI_Finalize) could come first. A short pause lets it
+    // through (seen lost about once in ten runs on a loaded machine).
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
 }
 
 ssize_t echoWrite(void* cookie, const char* buf, size_t size) {

@@ -65,7 +65,7 @@ void run(long nGlobal, int demAxis, int steps, int rank, int size) {
         p.radius = 1e-4;
     }
 
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     std::vector<double> forces, out;
     std::vector<double> tFind, tForward, tBackward, tTotal, bytes;
     const double dt = 1e-3;
@@ -86,7 +86,7 @@ void run(long nGlobal, int demAxis, int steps, int rank, int size) {
 
         forces.resize(3 * owned.size());
         for (std::size_t i = 0; i < owned.size(); ++i)
-            for (int a = 0; a < 3; ++a) forces[3 * i + a] = owned[i].state.v[a];
+            for (int a = 0; a < 3; ++a) forces[3 * i + a] = owned.state(i).v[a];
         MPI_Barrier(MPI_COMM_WORLD);
         t0 = MPI_Wtime();
         ex.backward(forces, 3, out);
@@ -95,7 +95,7 @@ void run(long nGlobal, int demAxis, int steps, int rank, int size) {
         MPI_Barrier(MPI_COMM_WORLD);
         t0 = MPI_Wtime();
         long found = 0;
-        for (const auto& o : owned) found += mesh.findCell(o.state.x) >= 0;
+        for (std::size_t i = 0; i < owned.size(); ++i) found += mesh.findCell(owned.state(i).x) >= 0;
         const double find = slowest(t0);
         if (found != static_cast<long>(owned.size())) std::fprintf(stderr, "findCell mismatch\n");
 

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Ergun packed-bed study of the air solver (README.md).
 
 Packed bed (default): granairAirFoam through a fixed bed (template/) over a

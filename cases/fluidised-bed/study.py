@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Fluidised bed: glass beads in a periodic air column, the superficial
 velocity stepped down through minimum fluidisation (README.md).
 

@@ -100,23 +100,13 @@ def post(a, run, res, n, wall, c):
     latz = a.rheology == "latzSchmidt"
     rho_b, d = (P.LATZ["rho_bulk"], P.LATZ["d"]) if latz else (P.RHO_BULK, P.D_PARTICLE)
     r = gc.powder.continuum(run)
-    t, s = r["t"], r["series"]
-    dpdz = s.get("outlet_dpdz_Pa_m")
-    centres, means = gc.series.window_means(t, r["dt"], [r["flow"]] + ([dpdz] if dpdz is not None else []), P.WINDOW)
-    w = gc.series.slope(t, r["out"], a.steady_from)
-    in_window = means[0][centres >= a.steady_from]
+    t = r["t"]
+    model = f"{P.LATZ['model'] if latz else 'mu(I)'}, N = {n}, {a.walls} walls"
+    o = gc.powder.continuum_outputs(r, res, a.steady_from, None, P.WINDOW, 0.0, "mass_flow.csv", None if latz else dict(
+        case="mcc-hopper", model=model, b_mm=P.D_OUTLET * 1e3, wall_time_s=float(wall), cores=a.np))
+    w, in_window = o["w"], o["flow"][o["centres"] >= a.steady_from]
     w_sd = float(np.sqrt(np.sum((in_window - w) ** 2) / max(1, len(in_window))))
     bev = (P.beverloo(P.K_RANGE[1], rho_b, d), P.beverloo(P.K_RANGE[0], rho_b, d))
-    os.makedirs(res, exist_ok=True)
-    gc.series.write_csv(os.path.join(res, "mass_flow.csv"), [("t", centres), ("mass_flow_kg_s", means[0])]
-                        + ([("outlet_dpdz_Pa_m", means[1])] if dpdz is not None else []), fmt="{:.6g}")
-    model = f"{P.LATZ['model'] if latz else 'mu(I)'}, N = {n}, {a.walls} walls"
-    if not latz:
-        gc.levels.write(os.path.join(res, "level.json"), case="mcc-hopper", level="continuum", model=model,
-                        b_mm=P.D_OUTLET * 1e3, air=dpdz is not None, steady_mass_flow_kg_s=w,
-                        steady_window_s=[a.steady_from, float(t[-1])],
-                        outlet_dpdz_Pa_m=None if dpdz is None else gc.series.time_mean(t, dpdz, a.steady_from, dt=r["dt"]),
-                        wall_time_s=float(wall), cores=a.np, timeseries="mass_flow.csv")
     fill_error = (r["initial"] - P.FILL_MASS) / P.FILL_MASS
     keys = [("t_end_s", float(t[-1])), ("steady_from_s", a.steady_from), ("steady_mass_flow_kg_s", w),
             ("window_mass_flow_sd_kg_s", w_sd), ("beverloo_k3_kg_s", bev[0]), ("beverloo_k1_kg_s", bev[1]),
@@ -132,12 +122,10 @@ def post(a, run, res, n, wall, c):
     print(f"mcc-hopper: steady mass flow {w:.4g} kg/s (t >= {a.steady_from} s; sd of 10 ms means {w_sd:.2g}); "
           f"Beverloo {bev[0]:.4g}-{bev[1]:.4g} kg/s (k = 3..1); mass balance error {r['balance']:.2e} "
           f"(solver max {r['solver_balance']:.1e}); initial {r['initial']:.6g} kg")
-    plot(centres, means[0], w, bev, a, t[-1], f"granairContinuumFoam, N = {n}, {a.walls} walls",
+    plot(o["centres"], o["flow"], w, bev, a, t[-1], f"granairContinuumFoam, N = {n}, {a.walls} walls",
          P.LATZ["material"] if latz else "MCC hopper (Remmelgas et al. 2019)", os.path.join(res, "mass_flow.png"))
-    c.true(f"N = {n}: every value of the time series finite", r["finite"], f"{len(t)} rows")
-    c.near(f"N = {n}: powder mass balance (outlet flow integrated)", r["balance"], 0.0, P.TOLERANCE,
-           "0.5 %: a few mg leave through the top boundary at start-up on fine meshes (README)")
-    c.near(f"N = {n}: solver's mass balance (all boundaries)", r["solver_balance"], 0.0, P.TOLERANCE, "as above")
+    gc.powder.check_continuum(c, f"N = {n}", r, P.TOLERANCE, "0.5 %: a few mg leave through the top boundary "
+                              "at start-up on fine meshes (README)")
     c.near(f"N = {n}: initial powder / 1000 g fill - 1", fill_error, 0.0, P.TOLERANCE, "setAlphaField of the fill plane")
     band = P.LATZ["band"] if latz else P.BAND
     c.within(f"N = {n}: steady mass flow / Beverloo (k = 1)", w / bev[1], *band,

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Settling-sphere validation: one sphere released from rest in still fluid,
 run with the coupled executable granairFoam (LIGGGHTS + OpenFOAM).
 

@@ -1,447 +1,416 @@
-#!/usr/bin/env python3
-"""study.py: the wedge-silo study. For each orifice width b: one DEM-only fill
-(settled on the closed shutter), then two discharge runs from that restart,
-with air and without air (DEM only). Then the results tables, pictures, VTK
-files and the study plots. See README.md.
+#!/usr/bin/python3
+"""The wedge-silo study (README.md): for each orifice width b one DEM-only
+fill (settled on the closed shutter), then two discharge runs from that
+restart, with air (granairFoam) and without (DEM only); then the results
+tables, field pictures and VTK files, the study plots and the checks.
 
-    study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR]
-             [--jobs 2] [--np 1] [--t-end T] [--write-interval T] [--check]
+    study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR] [--jobs 2] [--np 1]
+             [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
+             [--fill-height H] [--stage all|fill|runs|post] [--setup-only] [--check]
 
 Fills and runs are independent serial jobs, --jobs of them at a time (on a
 shared machine this beats one 2-rank job: the thin periodic slice gives every
-rank as many ghost particles as it owns); --np N runs each discharge under
-mpirun with N ranks instead (--fill-np likewise for the fills).
+rank as many ghost particles as it owns); --np N runs each discharge on N ranks.
 
---check exits non-zero unless every run's particle accounting closes
-exactly, the mass flow is positive, the outlet air pressure is below ambient
-while discharging (runs with air) and every output file exists.
+Checked per run (--check exits 1 on a failure): the particle accounting
+closes exactly (inserted = present + removed, lost 0); fields, picture and VTK
+at t = 0 and the end; with air, the air drawn in through the open top less
+the air leaving down through the orifice equals the growth of the silo's pore
+volume (continuity of the incompressible air), and that growth equals the
+volume of powder discharged (the silo's volume is fixed), within the
+tolerances of parameters.py and their reasons.
 """
-import argparse
-import concurrent.futures as cf
-import csv
 import json
 import math
 import os
+import random
 import shutil
-import subprocess
-import sys
 import time
 
+import numpy as np
+
+import granair_cases as gc
+import parameters as P
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import make_case as mc    # noqa: E402
-import post               # noqa: E402
 
 
-def sh(cmd, cwd, log):
-    """Run cmd in cwd with its output in cwd/log/<log>.log; raise with the tail on
-    failure. Returns the CPU time [s] of the command and everything it waited for
-    (a load-independent measure of its cost, unlike wall time on a shared machine)."""
-    os.makedirs(os.path.join(cwd, "log"), exist_ok=True)
-    path = os.path.join(cwd, "log", log + ".log")
-    with open(path, "w") as fh:
-        proc = subprocess.Popen(cmd, cwd=cwd, stdout=fh, stderr=subprocess.STDOUT,
-                                env=dict(os.environ, PWD=cwd))
-        _, status, usage = os.wait4(proc.pid, 0)
-        proc.returncode = os.waitstatus_to_exitcode(status)
-    if proc.returncode != 0:
-        with open(path) as fh:
-            tail = "".join(fh.readlines()[-25:])
-        raise RuntimeError(f"{' '.join(cmd)} failed in {cwd} (exit {proc.returncode}); "
-                           f"last lines of {path}:\n{tail}")
-    return usage.ru_utime + usage.ru_stime
+def numbers(a, b_mm, air):
+    """Every number of one fill or run of size a.size at b (the template's placeholders)."""
+    cfg, pb = P.SIZES[a.size], P.SIZES[a.size]["per_b"][b_mm]
+    b, theta = b_mm * 1e-3, math.radians(P.HALF_ANGLE)
+    hh = P.hopper_height(b)
+    d_mean, d3 = P.psd_moments()
+    s = a.s if a.s is not None else b / (pb["b_over_d"] * d_mean)
+    if not s >= 1.0:
+        raise gc.CaseError(f"coarse-graining factor s = {s}, expected >= 1")
+    d = s * d_mean
+    slice_ = cfg["slice_parcels"] * d
+    youngs = a.youngs if a.youngs is not None else cfg["youngs"]
+    k_coh = {"matched": P.K_COH_REAL * (youngs / P.E_REAL) ** (2.0 / 3.0), "raw": P.K_COH_REAL, "off": 0.0}[a.cohesion]
+    t_r = gc.dem.rayleigh_time(s * P.D_MIN_PSD / 2, youngs, P.NU, P.RHO_P)
+    interval, dem_dt = gc.dem.time_steps(cfg["cfd_dt"], t_r, cfg["rayleigh_fraction"])
+    t_end = a.t_end if a.t_end is not None else cfg["t_end"]
+    every = a.write_interval if a.write_interval is not None else cfg["write_interval"]
+    if abs(round(t_end / cfg["cfd_dt"]) * cfg["cfd_dt"] - t_end) > 1e-9:
+        raise gc.CaseError(f"discharge time {t_end} s is not a whole number of CFD steps ({cfg['cfd_dt']} s)")
+    h = P.KERNEL_WIDTHS * d         # cells near the orifice and the kernel width: 1.6 parcel diameters
+    nz_h = max(4, round(hh / h))
+    z_above = max(1, min(nz_h - 1, round(b / (hh / nz_h)))) * hh / nz_h    # a face layer about b above
+    fill = a.fill_height if a.fill_height is not None else pb["fill"]
+    chunk = max(1, round(0.02 / dem_dt))
+    return dict(gc.template.constants(P), SIZE=a.size, B_MM=b_mm, B=b / 2, W=P.WIDTH / 2, HH=hh,
+                HT=hh + P.SHAFT_HEIGHT, THETA=theta, SLICE=slice_, SLICE_MM=slice_ * 1e3, NX=max(4, round(b / h)),
+                NX_SIDE=max(2, round((P.WIDTH - b) / 2 / (2 * h))), NZ_BELOW=max(4, round(P.BOX_BELOW / h)),
+                NZ_HOPPER=nz_h, NZ_SHAFT=max(10, round(P.SHAFT_HEIGHT / max(2 * h, 0.004))), S=s, D_PRIMARY=d_mean,
+                D_PARCEL=d, DEPTH_SCALE=P.DEPTH / slice_, FILL_HEIGHT=fill, T_END=t_end, WRITE_INTERVAL=every,
+                CFD_DT=cfg["cfd_dt"], DEM_DT=dem_dt, COUPLING_INTERVAL=interval, RAYLEIGH_S=t_r,
+                WRITE_EVERY=round(every / cfg["cfd_dt"]), SNAP=round(every / dem_dt), NP=a.np,
+                AIR="on" if air else "off", KERNEL_WIDTH=h, OUTLET_X=b / 2 + 1e-6, ABOVE_Z=z_above,
+                ABOVE_X=b / 2 + z_above * math.tan(theta) + 1e-6, ABOVE_Z_LO=z_above - 1e-4,
+                ABOVE_Z_HI=z_above + 1e-4, SKIN=0.3 * d, YOUNGS=youngs, MU_W=math.tan(math.radians(P.WALL_FRICTION_ANGLE)),
+                COHESION=a.cohesion, K_COH=k_coh, R_TYPE=s * P.D_MEAN_PSD / 2, CHUNK=chunk,
+                SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
+                if youngs < 5e6 else "# (E >= 5e6 Pa: no soft_particles needed)",
+                N_MIN=math.ceil(P.SETTLE_MIN / (chunk * dem_dt)), N_MAX=math.ceil(P.SETTLE_MAX / (chunk * dem_dt)),
+                FILL="../fill", SEED=a.seed,
+                N_PARCELS=round(P.PACKING_SETTLED * P.fill_area(b, fill) * slice_ / (s ** 3 * (math.pi / 6 * d3))))
 
 
-def mpi(np_, cmd, parallel_flag):
-    if np_ <= 1:
-        return cmd
-    # A waiting rank yields its core instead of spinning: on a shared machine
-    # a spinning rank takes the CPU its partner needs (LIGGGHTS synchronises
-    # every step); on an idle machine yielding costs next to nothing.
-    os.environ.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")
-    return ["mpirun", "-np", str(np_)] + cmd + (["-parallel"] if parallel_flag else [])
+def hopper_walls(v, d):
+    """The two hopper walls as STL triangles in strips of about one slice thickness
+    along the slope, spanning the periodic slice exactly (LIGGGHTS 3.8 sizes its
+    mesh bins by the largest triangle; one long triangle in a thin periodic box
+    fails an internal assertion)."""
+    hh, b2, t, sl = v["HH"], v["B"], math.tan(v["THETA"]), v["SLICE"]
+    n = max(2, math.ceil(hh / math.cos(v["THETA"]) / sl))
+    for side, sgn in (("left", -1), ("right", 1)):
+        quads = []
+        for k in range(n):
+            z0, z1 = hh * k / n, hh * (k + 1) / n
+            x0, x1 = sgn * (b2 + z0 * t), sgn * (b2 + z1 * t)
+            quads.append([(x0, 0.0, z0), (x0, sl, z0), (x1, sl, z1), (x1, 0.0, z1)])
+        gc.template.write(os.path.join(d, "dem", f"hopper_{side}.stl"), gc.dem.stl(f"hopper_{side}", quads))
 
 
-def case_for(a, b, air):
-    return mc.Case(a.size, b, air=air, s=a.s, t_end=a.t_end, write_interval=a.write_interval,
-                   youngs=a.youngs, cohesion=a.cohesion, np=a.np, seed=a.seed, fill=a.fill_height)
+def write_fill(v, d):
+    """The fill folder: a loose random packing of the parcels (the PSD scaled by s)
+    at about PACKING_INSERT solid fraction, periodic in y, and the settle script."""
+    rng = random.Random(v["SEED"])
+    diam = sorted((v["S"] * P.draw_primary_diameter(rng) for _ in range(v["N_PARCELS"])), reverse=True)
+    vol = sum(math.pi / 6 * dd ** 3 for dd in diam)
+    t, hh, b2, w2, sl, gap = math.tan(v["THETA"]), v["HH"], v["B"], v["W"], v["SLICE"], 0.02 * v["D_PARCEL"]
+    top = v["FILL_HEIGHT"]
+    while P.fill_area(2 * b2, top) * sl * P.PACKING_INSERT < vol:
+        top += 0.001
+
+    def sample(rng, r, top):
+        z = rng.uniform(r, top)
+        return rng.uniform(-w2 + r, w2 - r), rng.uniform(0.0, sl), z
+
+    def inside(x, y, z, r):
+        c = math.cos(v["THETA"])
+        return not (z < r + gap or abs(x) > w2 - r - gap or (z < hh + r and (
+            (x + b2 + z * t) * c < r + gap or (b2 + z * t - x) * c < r + gap)))
+    atoms = gc.dem.loose_packing(diam, rng, sample, inside, lambda tp: tp * 1.05, top,
+                                 v["S"] * P.D_MAX_PSD * 1.0001, gap, origin=(-w2, 0.0, 0.0), periodic_y=sl)
+    box = (-P.WIDTH / 2 - 0.001, P.WIDTH / 2 + 0.001, 0.0, sl, -P.SINK_DEPTH - 0.005,
+           max(hh + P.SHAFT_HEIGHT, 1.9 * v["FILL_HEIGHT"] + 0.02))
+    if max(z + dd / 2 for _, _, z, dd in atoms) > box[5]:
+        raise gc.CaseError("the loose packing reaches above the DEM box")
+    gc.template.render(os.path.join(HERE, "template"), d, v, only=["dem/in.fill", "dem/in.materials"])
+    gc.dem.write_data(os.path.join(d, "dem", "packing.data"), atoms, box, P.RHO_P,
+                      f"wedge silo loose packing: {len(atoms)} parcels (study.py)")
+    hopper_walls(v, d)
 
 
 def do_fill(a, b, work):
     d = os.path.join(work, f"b{b}", "fill")
     shutil.rmtree(d, ignore_errors=True)
+    write_fill(numbers(a, b, False), d)
+    if a.setup_only:
+        return {}
     t0 = time.time()
-    case = case_for(a, b, False)
-    mc.write_fill(case, d)
-    t1 = time.time()
-    cpu = sh(mpi(a.fill_np, ["liggghts", "-in", "dem/in.fill", "-log", "log/log.liggghts",
-                             "-screen", "log/screen.liggghts"], False), d, "fill")
-    return dict(b=b, stage=f"b{b}_fill", packing_s=t1 - t0, run_s=time.time() - t1, run_cpu_s=cpu)
+    cpu = gc.runner.run(["liggghts", "-in", "dem/in.fill", "-log", "log/log.liggghts", "-screen", "log/screen.liggghts"],
+                        d, "fill", np=a.fill_np, parallel=False)
+    return dict(cpu_s=cpu, wall_s=time.time() - t0)
 
 
 def do_run(a, b, air, work):
-    name = f"b{b}_{'air' if air else 'noair'}"
-    d = os.path.join(work, f"b{b}", "air" if air else "noair")
-    fill = os.path.join(work, f"b{b}", "fill")
+    name, d = f"b{b}_{'air' if air else 'noair'}", os.path.join(work, f"b{b}", "air" if air else "noair")
     shutil.rmtree(d, ignore_errors=True)
+    v = numbers(a, b, air)
+    gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",
+                                                                  "dem/in.materials"])
+    hopper_walls(v, d)
+    os.makedirs(os.path.join(d, "dem", "post"))
+    with open(os.path.join(d, "case.json"), "w") as fh:
+        json.dump(v, fh, indent=1)
+    if a.setup_only:
+        return {}
+    gc.runner.mesh(d, a.np)
     t0 = time.time()
-    case = case_for(a, b, air)
-    mc.write_run(case, d, fill)
-    if air:
-        mc.write_initial_void_fraction(case, d, os.path.join(fill, "dem", "fill.dump"))
-    sh(["blockMesh"], d, "blockMesh")
+    cpu = gc.runner.run(["granairFoam"], d, np=a.np)
+    wall = time.time() - t0
     if a.np > 1:
-        sh(["decomposePar", "-force"], d, "decomposePar")
-    t1 = time.time()
-    cpu = sh(mpi(a.np, ["granairFoam"], True), d, "granairFoam")
-    t2 = time.time()
-    if air and a.np > 1:
-        sh(["reconstructPar"], d, "reconstructPar")
+        gc.runner.run(["reconstructPar", "-withZero"], d)   # the start-time void fraction is in processor*/0
+    times = ",".join(f"{t:g}" for t in field_times(v))
+    gc.runner.run(["foamToVTK", "-time", times, "-fields", "(voidfraction p U)" if air else "(voidfraction)"], d)
+    for func in ("writeCellCentres", "writeCellVolumes"):       # the silo's cells and volumes: its pore volume
+        gc.runner.run(["postProcess", "-func", func, "-time", "0"], d, func)
+    return dict(cpu_s=cpu, wall_s=wall)
+
+
+def field_times(v):
+    return [round(k * v["WRITE_INTERVAL"], 9) for k in range(int(math.floor(v["T_END"] / v["WRITE_INTERVAL"] + 1e-9)) + 1)]
+
+
+def fill_stats(fill_dir, v):
+    """Bulk density of the settled fill (parcels with centres between 5 mm above the
+    orifice and 3 parcel diameters below the top, over that silo volume), the settled
+    fill height (mean over x-bins of the highest parcel top) and the mass."""
+    f = gc.dem.read_dump(os.path.join(fill_dir, "dem", "fill.dump"))
+    x, z, r, m = f["x"], f["z"], f["radius"], f["mass"]
+    edges = np.linspace(-P.WIDTH / 2, P.WIDTH / 2, 6)
+    top = float(np.mean([np.max(z[sel] + r[sel]) for lo, hi in zip(edges[:-1], edges[1:])
+                         for sel in [(x >= lo) & (x < hi)] if sel.any()]))
+    z0, z1 = 0.005, top - 3 * v["D_PARCEL"]
+    b = 2 * v["B"]
+    rho_b = float(m[(z >= z0) & (z < z1)].sum() / ((P.fill_area(b, z1) - P.fill_area(b, z0)) * v["SLICE"]))
+    beverloo = [[gc.closed_forms.beverloo_slot(b, dd, rho_b, P.DEPTH, k, P.BEVERLOO_C, P.G) for k in P.K_RANGE]
+                for dd in (v["D_PRIMARY"], v["D_PARCEL"])]
+    return dict(rho_b=rho_b, solid_fraction=rho_b / P.RHO_P, fill_top_m=top, n_parcels=len(x),
+                mass_slice_kg=float(m.sum()), mass_full_depth_kg=float(m.sum() * v["DEPTH_SCALE"]),
+                full_silo_primaries_d225=P.PACKING_SETTLED * P.fill_area(b, top) * P.DEPTH / (math.pi / 6 * 225e-6 ** 3),
+                beverloo_kg_s=beverloo[0], beverloo_parcel_kg_s=beverloo[1], case=v)
+
+
+def post_run(d, res, name):
+    """One run: results CSV, steady rates and means, the air volume balance, fields."""
+    with open(os.path.join(d, "case.json")) as fh:
+        v = json.load(fh)
+    r = gc.powder.dem(d)
+    s, t, air = r["series"], r["t"], v["AIR"] == "on"
+    zero = np.zeros(len(t))
+    gc.series.write_csv(os.path.join(res, f"{name}.csv"), [("t", t), ("mass_flow_kg_s", s["mass_flow_kg_s"])] + [
+        (k, s.get(k, zero)) for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")] + [
+        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"])])
+    t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
+    out = dict(name=name, b_mm=v["B_MM"], air=air, s=v["S"], size=v["SIZE"], np=v["NP"], t_end=float(t[-1]),
+               steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1),
+               balance=r["balance"], field_times=[x for x in field_times(v) if gc.foam.time_dir(d, x)])
     if air:
-        times = ",".join(f"{t:g}" for t in post.field_times(case))
-        sh(["foamToVTK", "-time", times, "-fields", "(voidfraction p U)"],
-           d, "foamToVTK")
-    return dict(b=b, stage=name, setup_s=t1 - t0, run_s=t2 - t1, run_cpu_s=cpu,
-                post_s=time.time() - t2)
+        for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m"):
+            out[k] = gc.series.time_mean(t, s[k], t0, t1)
+        first = np.argmax(s["discharged_kg"] > 0)        # "while discharging": from the first discharged particle on
+        out["outlet_p_mean_discharging_Pa"] = float(np.mean(s["outlet_p_Pa"][first:]))
+        # the air volume balance of the silo above the orifice up to the last field time
+        # (monitors: flux along +z; the pore volume sum(eps V) of the cells above z = 0)
+        te = out["balance_time_s"] = out["field_times"][-1]
+        k, dt = t <= te + 1e-9, gc.series.step_lengths(t)
+        z, vol = (gc.foam.read_field(os.path.join(d, "0", f)) for f in ("Cz", "V"))
+        eps = [gc.foam.read_field(os.path.join(gc.foam.time_dir(d, x), "voidfraction"), len(z)) for x in (0, te)]
+        out["air_in_top_m3"] = float(-np.sum((s["top_air_kg_s"] * dt)[k]) / P.AIR_RHO)
+        out["air_out_orifice_m3"] = float(-np.sum((s["outlet_air_kg_s"] * dt)[k]) / P.AIR_RHO)
+        out["pore_growth_m3"] = float(np.sum(((eps[1] - eps[0]) * vol)[z > 0]))
+        out["powder_out_m3"] = float(s["discharged_kg"][k][-1] / v["DEPTH_SCALE"] / P.RHO_P)
+    out["png"] = gc.plots.case_fields(
+        os.path.join(res, f"{name}_fields.png"), f"{name}: b = {v['B_MM']} mm, {'with air' if air else 'DEM only'}",
+        d, out["field_times"], [("voidfraction", "void fraction", "viridis", (0.35, 1.0))]
+        + ([("p", "air pressure - ambient [Pa]", "RdBu_r", None)] if air else []),
+        (-P.WIDTH / 2 * 1e3, P.WIDTH / 2 * 1e3), (-P.BOX_BELOW * 1e3, min(v["HT"], v["FILL_HEIGHT"] + 0.03) * 1e3))
+    dst = os.path.join(res, "vtk", name, "openfoam")
+    shutil.rmtree(dst, ignore_errors=True)
+    if os.path.isdir(os.path.join(d, "VTK")):
+        shutil.copytree(os.path.join(d, "VTK"), dst)
+    return out
 
 
-def pool(jobs, tasks, t_start):
-    """Run tasks [(fn, args)] with at most `jobs` at a time; re-raise the first failure.
-    Prints one line per finished task (runs take minutes each: the user sees it move)."""
-    results = []
-    with cf.ThreadPoolExecutor(max_workers=jobs) as ex:
-        futs = [ex.submit(fn, *args) for fn, args in tasks]
-        for done, f in enumerate(cf.as_completed(futs), 1):
-            r = f.result()
-            results.append(r)
-            print(f"wedge-silo: [{done}/{len(futs)}] {r['stage']} done: {r['run_s']:.0f} s wall, "
-                  f"{r['run_cpu_s']:.0f} s CPU ({time.time() - t_start:.0f} s since start)", flush=True)
-    return results
+def crewdson(w0, dpdz, rho_b):
+    """Air-impeded rate W0 sqrt(1 + (dp/dz)/(rho_b g)) (Crewdson et al. 1977), z up; dp/dz a number or an array."""
+    return np.vectorize(lambda x: gc.closed_forms.crewdson(w0, x, rho_b, P.G))(dpdz)
 
 
-def study_plots(summaries, fills, series, out, size):
-    import numpy as np
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def post_study(a, work, res, timings, wall):
+    fills, runs, series = {}, [], {}
+    for b in a.b:
+        fills[b] = fill_stats(os.path.join(work, f"b{b}", "fill"), numbers(a, b, False))
+        for r in a.runs:
+            runs.append(post_run(os.path.join(work, f"b{b}", r), res, f"b{b}_{r}"))
+            series[runs[-1]["name"]] = gc.series.read_csv(os.path.join(res, f"b{b}_{r}.csv"))
+    by = {(x["b_mm"], x["air"]): x for x in runs}
+    for x in runs:
+        if x["air"] and (x["b_mm"], False) in by:
+            x["crewdson_kg_s"] = float(crewdson(by[(x["b_mm"], False)]["W_kg_s"], x["outlet_dpdz_Pa_m"], fills[x["b_mm"]]["rho_b"]))
+    plots(runs, fills, series, res, a.size)
+    write_summary(runs, fills, timings, res, wall, a)
+    for x in runs:
+        gc.levels.write(os.path.join(res, f"{x['name']}.level.json"), case="wedge-silo",
+                        level="cg-dem-cfd" if x["air"] else "cg-dem",
+                        model=f"DEM{'-CFD' if x['air'] else ''}, s = {x['s']:.3g}, {x['size']} size", b_mm=x["b_mm"],
+                        air=x["air"], steady_mass_flow_kg_s=x["W_kg_s"], steady_window_s=[x["steady_from_s"], x["steady_to_s"]],
+                        outlet_dpdz_Pa_m=x.get("outlet_dpdz_Pa_m"), wall_time_s=x["balance"]["wall_time_s"], cores=x["np"],
+                        timeseries=f"{x['name']}.csv", parcels=fills[x["b_mm"]]["n_parcels"], coarse_graining_factor=x["s"])
+    print(open(os.path.join(res, "summary.txt")).read())
+    check(runs, res).report(enforce=a.check)
+    print(f"wedge-silo: results in {res}: mass_flow.png, outlet_pressure_gradient.png (the study plots), summary.txt|csv, "
+          f"b<b>_<air|noair>.csv (time series), _fields.png and vtk/ (fields); the cases in {work}", flush=True)
+
+
+def check(runs, res):
+    c = gc.checks.Checks("wedge-silo")
+    for x in runs:
+        n, bal = x["name"], x["balance"]
+        c.exact(f"{n}: inserted = present + removed", bal["inserted"], bal["present"] + bal["removed"], "integer counts")
+        c.exact(f"{n}: lost", bal["lost"], 0, "DischargeCounter: every parcel is in the silo, below it or removed")
+        c.true(f"{n}: fields, picture and VTK at t = 0 and the end", x["field_times"][:1] == [0] and x["png"] and
+               os.path.isdir(os.path.join(res, "vtk", n, "openfoam")), f"field times {x['field_times']}")
+        if x["air"]:
+            t = f"0-{x['balance_time_s']:g} s"
+            c.close(f"{n}: air in through the top - out through the orifice vs pore-volume growth of the silo, {t}",
+                    x["air_in_top_m3"] - x["air_out_orifice_m3"], x["pore_growth_m3"], P.AIR_CONTINUITY,
+                    "the incompressible air's continuity, summed over the steps: each closes to the pressure solver's "
+                    "1e-9; a face flux lost or counted twice would show at 1e-2")
+            c.close(f"{n}: pore-volume growth vs powder volume discharged, {t}", x["pore_growth_m3"], x["powder_out_m3"],
+                    P.PORE_VS_POWDER, "the silo's volume is fixed; the Gaussian kernel puts a share of the parcels "
+                    "within ~3 kernel widths of the orifice plane on its other side")
+    return c
+
+
+def plots(runs, fills, series, res, size):
+    plt = gc.plots.pyplot()
     colours = {5: "tab:blue", 10: "tab:orange", 15: "tab:green"}
-    bs = sorted({s["b_mm"] for s in summaries})
-
-    # Mass flow vs time with the Beverloo band and the Crewdson estimate.
+    by = {(x["b_mm"], x["air"]): x for x in runs}
     fig, ax = plt.subplots(figsize=(11.5, 5.5))
-    for b in bs:
-        c = colours.get(b, "k")
-        fs = fills[b]
-        lo, hi = fs["beverloo_kg_s"][1], fs["beverloo_kg_s"][0]
-        ax.axhspan(lo, hi, color=c, alpha=0.15, lw=0,
+    for b in sorted(fills):
+        c, f = colours.get(b, "k"), fills[b]
+        ax.axhspan(f["beverloo_kg_s"][1], f["beverloo_kg_s"][0], color=c, alpha=0.15, lw=0,
                    label=f"b = {b} mm, Hagen-Beverloo, k = 1..3")
-        for s in summaries:
-            if s["b_mm"] != b:
-                continue
-            ts = series[s["name"]]
-            ax.plot(ts["t"], ts["mass_flow_kg_s"], color=c, ls="-" if s["air"] else ":",
-                    lw=1.6, label=f"b = {b} mm, {'with air' if s['air'] else 'DEM only'}")
-        if f"b{b}_air" in series and f"b{b}_noair" in series:
-            w0 = next(s["W_kg_s"] for s in summaries if s["name"] == f"b{b}_noair")
+        for x in (by.get((b, air)) for air in (True, False)):
+            if x:
+                ts = series[x["name"]]
+                ax.plot(ts["t"], ts["mass_flow_kg_s"], color=c, ls="-" if x["air"] else ":", lw=1.6,
+                        label=f"b = {b} mm, {'with air' if x['air'] else 'DEM only'}")
+        if (b, True) in by and (b, False) in by:
             ts = series[f"b{b}_air"]
-            dpdz = post.trailing_mean(ts["t"], ts["outlet_dpdz_Pa_m"], 0.1)
-            ax.plot(ts["t"], post.crewdson(w0, dpdz, fs["rho_b"]), color=c, ls="--", lw=1,
+            ax.plot(ts["t"], crewdson(by[(b, False)]["W_kg_s"], gc.series.trailing_mean(ts["t"], ts["outlet_dpdz_Pa_m"], 0.1),
+                                      f["rho_b"]), color=c, ls="--", lw=1,
                     label=f"b = {b} mm, Crewdson: W0 sqrt(1 + (dp/dz)/(rho_b g))")
-    ax.set_xlabel("time since the shutter opened [s]")
-    ax.set_ylabel("mass flow rate, full 60 mm depth [kg/s]")
-    ax.set_title(f"Wedge silo ({size}): mass flow; shaded: Hagen-Beverloo slot band "
-                 f"(C = {post.BEVERLOO_C}, k = 1..3)", fontsize=9)
-    ax.set_ylim(bottom=0)
+    ax.set(xlabel="time since the shutter opened [s]", ylabel="mass flow rate, full 60 mm depth [kg/s]", ylim=(0, None))
+    ax.set_title(f"Wedge silo ({size}): mass flow; shaded: Hagen-Beverloo slot band (C = {P.BEVERLOO_C}, k = 1..3)", fontsize=9)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "mass_flow.png"), dpi=120)
-    plt.close(fig)
-
-    # Outlet pressure gradient vs time.
+    gc.plots.save(fig, os.path.join(res, "mass_flow.png"))
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-    for s in summaries:
-        if not s["air"]:
-            continue
-        b = s["b_mm"]
-        ts = series[s["name"]]
-        rho_g = fills[b]["rho_b"] * post.G
-        axes[0].plot(ts["t"], ts["outlet_dpdz_Pa_m"], color=colours.get(b, "k"), lw=0.4, alpha=0.35)
-        axes[0].plot(ts["t"], post.trailing_mean(ts["t"], ts["outlet_dpdz_Pa_m"], 0.1),
-                     color=colours.get(b, "k"), lw=1.8, label=f"b = {b} mm (0.1 s mean)")
-        axes[0].axhline(-rho_g, color=colours.get(b, "k"), lw=0.8, ls=":")
-        axes[1].plot(ts["t"], post.trailing_mean(ts["t"], ts["outlet_p_Pa"], 0.1),
-                     color=colours.get(b, "k"), lw=1.8, label=f"b = {b} mm, orifice plane")
-        axes[1].plot(ts["t"], post.trailing_mean(ts["t"], ts["above_p_Pa"], 0.1),
-                     color=colours.get(b, "k"), lw=1.2, ls="--", label=f"b = {b} mm, about b above")
-    axes[0].set_title("air pressure gradient at the orifice, dp/dz (z up); dotted: -rho_b g",
-                      fontsize=9)
-    axes[0].set_xlabel("time [s]")
-    axes[0].set_ylabel("dp/dz [Pa/m]")
+    for x in (x for x in runs if x["air"]):
+        b, ts, c = x["b_mm"], series[x["name"]], colours.get(x["b_mm"], "k")
+        mean = lambda k: gc.series.trailing_mean(ts["t"], ts[k], 0.1)   # noqa: E731
+        axes[0].plot(ts["t"], ts["outlet_dpdz_Pa_m"], color=c, lw=0.4, alpha=0.35)
+        axes[0].plot(ts["t"], mean("outlet_dpdz_Pa_m"), color=c, lw=1.8, label=f"b = {b} mm (0.1 s mean)")
+        axes[0].axhline(-fills[b]["rho_b"] * P.G, color=c, lw=0.8, ls=":")
+        axes[1].plot(ts["t"], mean("outlet_p_Pa"), color=c, lw=1.8, label=f"b = {b} mm, orifice plane")
+        axes[1].plot(ts["t"], mean("above_p_Pa"), color=c, lw=1.2, ls="--", label=f"b = {b} mm, about b above")
+    axes[0].set(xlabel="time [s]", ylabel="dp/dz [Pa/m]")
+    axes[0].set_title("air pressure gradient at the orifice, dp/dz (z up); dotted: -rho_b g", fontsize=9)
+    axes[1].set(xlabel="time [s]", ylabel="p [Pa]")
     axes[1].set_title("air pressure relative to ambient (0.1 s mean)", fontsize=9)
-    axes[1].set_xlabel("time [s]")
-    axes[1].set_ylabel("p [Pa]")
     for ax in axes:
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "outlet_pressure_gradient.png"), dpi=120)
-    plt.close(fig)
+    gc.plots.save(fig, os.path.join(res, "outlet_pressure_gradient.png"))
 
+
+def write_summary(runs, fills, timings, res, wall, a):
+    rows = [dict(run=x["name"], b_mm=x["b_mm"], air=int(x["air"]), s=f"{x['s']:.4g}", W_kg_s=f"{x['W_kg_s']:.5g}",
+                 **{k: f"{x.get(k, 0):.5g}" for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa")},
+                 crewdson_kg_s=f"{x.get('crewdson_kg_s', math.nan):.5g}", rho_b_kg_m3=f"{fills[x['b_mm']]['rho_b']:.5g}",
+                 beverloo_k3_kg_s=f"{fills[x['b_mm']]['beverloo_kg_s'][1]:.5g}",
+                 beverloo_k1_kg_s=f"{fills[x['b_mm']]['beverloo_kg_s'][0]:.5g}",
+                 **{k: x["balance"][k] for k in ("inserted", "present", "removed", "lost")},
+                 run_wall_s=f"{x['balance']['wall_time_s']:.1f}",
+                 **{k: f"{x[k]:.5g}" for k in ("air_in_top_m3", "air_out_orifice_m3", "pore_growth_m3", "powder_out_m3")
+                    if k in x}) for x in runs]
+    gc.series.write_rows(os.path.join(res, "summary.csv"), rows)
+    lines = [f"wedge-silo study, size {a.size} (total wall time {wall:.0f} s)", ""]
+    for b, f in sorted(fills.items()):
+        v, bev = f["case"], f["beverloo_kg_s"] + f["beverloo_parcel_kg_s"]
+        lines += [f"b = {b} mm: s = {v['S']:.3g}, parcel d = {v['D_PARCEL'] * 1e3:.3g} mm (b/d = {b * 1e-3 / v['D_PARCEL']:.3g}), "
+                  f"slice {v['SLICE'] * 1e3:.3g} mm (x{v['DEPTH_SCALE']:.3g} to 60 mm), {f['n_parcels']} parcels; settled fill "
+                  f"{f['fill_top_m'] * 1e3:.0f} mm, rho_b = {f['rho_b']:.0f} kg/m3 (solid fraction {f['solid_fraction']:.3f}); "
+                  f"full 60 mm silo at d = 225 um: {f['full_silo_primaries_d225']:.3g} particles",
+                  f"   Hagen-Beverloo (C = {P.BEVERLOO_C}, k = 1..3, primary d): {bev[1]:.4g} .. {bev[0]:.4g} kg/s; "
+                  f"with the parcel d: {bev[3]:.4g} .. {bev[2]:.4g} kg/s"]
+    lines += ["", f"{'run':14s} {'W [kg/s]':>10s} {'dp/dz [Pa/m]':>13s} {'p_out [Pa]':>11s} {'p_above [Pa]':>12s} "
+              f"{'Crewdson':>9s} {'balance':>22s} {'wall [s]':>9s}  air in - out | pore growth | powder out [mm3]"]
+    for x in runs:
+        bal = x["balance"]
+        lines.append(f"{x['name']:14s} {x['W_kg_s']:10.4g} {x.get('outlet_dpdz_Pa_m', 0):13.4g} {x.get('outlet_p_Pa', 0):11.4g} "
+                     f"{x.get('above_p_Pa', 0):12.4g} {x.get('crewdson_kg_s', math.nan):9.4g} "
+                     f"{bal['inserted']:>7d}={bal['present']}+{bal['removed']}{'' if bal['closes'] else ' OPEN'} "
+                     f"{bal['wall_time_s']:9.0f}" + (f"  {1e9 * (x['air_in_top_m3'] - x['air_out_orifice_m3']):.4g} | "
+                                                     f"{1e9 * x['pore_growth_m3']:.4g} | {1e9 * x['powder_out_m3']:.4g}"
+                                                     if x["air"] else ""))
+    if timings:
+        lines += ["", "Stage times: wall [s] (on this machine, at its load) and CPU [s] of the stage's processes"]
+        lines += [f"  {k:14s} wall {t['wall_s']:8.0f}   cpu {t['cpu_s']:8.0f}" for k, t in sorted(timings.items())]
+        lines.append(f"  total CPU {sum(t['cpu_s'] for t in timings.values()):.0f} s")
+    by = {(x["b_mm"], x["air"]): x for x in runs}
+    lines += ["", "Air against no air, and the DEM-only rate against the Hagen-Beverloo band (reported):"]
+    for b in sorted(fills):
+        (hi, lo), wa, w0 = fills[b]["beverloo_kg_s"], by.get((b, True), {}).get("W_kg_s"), by.get((b, False), {}).get("W_kg_s")
+        if wa and w0:
+            lines.append(f"  b = {b}: with air W {wa:.4g}, without {w0:.4g} kg/s ({100 * (wa / w0 - 1):+.1f} %)")
+        if w0:
+            lines.append(f"  b = {b}: DEM-only W {w0:.4g} kg/s = {w0 / (0.5 * (lo + hi)):.2f} x the middle of {lo:.4g}..{hi:.4g}")
+    with open(os.path.join(res, "summary.txt"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--size", default="demo", choices=sorted(mc.SIZES))
-    ap.add_argument("--b", type=int, nargs="+", default=[5, 10, 15])
+    ap = gc.cli.parser(__doc__)
+    ap.add_argument("--size", default="demo", choices=sorted(P.SIZES))
+    ap.add_argument("--b", type=int, nargs="+", default=[5, 10, 15], choices=[5, 10, 15])
     ap.add_argument("--runs", nargs="+", default=["air", "noair"], choices=["air", "noair"])
-    ap.add_argument("--out", default=os.path.join(HERE, "run"))
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time")
-    ap.add_argument("--np", type=int, default=1, help="MPI ranks per discharge run")
     ap.add_argument("--fill-np", type=int, default=1, help="MPI ranks per fill (plain LIGGGHTS)")
     ap.add_argument("--s", type=float, default=None, help="coarse-graining factor for every b")
     ap.add_argument("--t-end", type=float, default=None, help="discharge time [s]")
-    ap.add_argument("--write-interval", type=float, default=None,
-                    help="field interval [s] (default: the size's, demo 0.25, study 1)")
-    ap.add_argument("--youngs", type=float, default=None)
+    ap.add_argument("--write-interval", type=float, default=None, help="field interval [s] (demo 0.25, study 1)")
+    ap.add_argument("--youngs", type=float, default=None, help="Young's modulus used [Pa]")
     ap.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
-    ap.add_argument("--fill-height", type=float, default=None)
+    ap.add_argument("--fill-height", type=float, default=None, help="settled fill height [m]")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--stage", default="all", choices=["all", "fill", "runs", "post"],
-                    help="all (default); fill: the fills only; runs: the runs from existing fills, "
-                         "then post-processing; post: post-process existing runs")
-    ap.add_argument("--check", action="store_true")
-    a = ap.parse_args()
-    out = os.path.abspath(a.out)
-    work = os.path.join(out, "runs")
-    res = os.path.join(out, "results")
+                    help="fill: the fills only; runs: the runs from existing fills, then post; post: post only")
+    a = gc.cli.parse(ap, os.path.join(HERE, "run"))
+    work, res = os.path.join(a.out, "runs"), os.path.join(a.out, "results")
     os.makedirs(work, exist_ok=True)
     os.makedirs(res, exist_ok=True)
-    t_start = time.time()
-    timings = []
-    print(f"wedge-silo: size {a.size}, b = {a.b} mm, runs {a.runs}, stage {a.stage}, {a.jobs} job(s) "
-          f"of {a.np} rank(s); work in {work}", flush=True)
+    t0 = time.time()
+    print(f"wedge-silo: size {a.size}, b = {a.b} mm, runs {a.runs}, stage {a.stage}, {a.jobs} job(s) of {a.np} "
+          f"rank(s); work in {work}", flush=True)
     timing_file = os.path.join(res, "timings.json")
-    if a.stage in ("all", "fill"):
-        timings += pool(a.jobs, [(do_fill, (a, b, work)) for b in a.b], t_start)
-        print(f"wedge-silo: fills done after {time.time() - t_start:.0f} s", flush=True)
-    if a.stage in ("all", "runs"):
-        print(f"wedge-silo: discharge runs started; each prints its progress (simulated time, ETA) "
-              f"to {work}/b<b>/<air|noair>/log/granairFoam.log", flush=True)
-        # small b first: its parcels are the smallest and its runs the longest
-        tasks = [(do_run, (a, b, r == "air", work)) for b in a.b for r in a.runs]
-        timings += pool(a.jobs, tasks, t_start)
-        print(f"wedge-silo: runs done after {time.time() - t_start:.0f} s", flush=True)
-    # stage times accumulate over invocations (e.g. --stage fill, then --stage runs)
-    old = []
+    timings = {}            # stage times accumulate over invocations (--stage fill, then --stage runs)
     if os.path.exists(timing_file):
         with open(timing_file) as fh:
-            old = [t for t in json.load(fh) if t["stage"] not in {x["stage"] for x in timings}]
-    timings = old + timings
+            timings = json.load(fh)
+        timings = timings if isinstance(timings, dict) else {}    # an older study's list: start again
+    for stage, tasks in (("fill", [(f"b{b}_fill", do_fill, (a, b, work)) for b in a.b]),
+                         ("runs", [(f"b{b}_{r}", do_run, (a, b, r == "air", work)) for b in a.b for r in a.runs])):
+        if a.stage in ("all", stage):
+            if stage == "runs" and not a.setup_only:
+                print(f"wedge-silo: discharge runs started; each prints its progress (simulated time, ETA) to "
+                      f"{work}/b<b>/<air|noair>/log/granairFoam.log", flush=True)
+            timings.update({k: r for k, r in gc.runner.pool(tasks, a.jobs, "wedge-silo").items() if r})
+    if a.setup_only:
+        return print(f"wedge-silo: fill and run folders written to {work}")
     with open(timing_file, "w") as fh:
         json.dump(timings, fh, indent=1)
     if a.stage == "fill":
         return
-
-    # Post-processing.
-    import numpy as np
-    fills, summaries, series = {}, [], {}
-    for b in a.b:
-        fill_dir = os.path.join(work, f"b{b}", "fill")
-        case = case_for(a, b, False)
-        fs = post.fill_stats(fill_dir, case)
-        fs["beverloo_kg_s"] = [post.beverloo(case.b, case.d_primary_mean, fs["rho_b"], k)
-                               for k in post.K_RANGE]
-        fs["beverloo_parcel_kg_s"] = [post.beverloo(case.b, case.d_parcel_mean, fs["rho_b"], k)
-                                      for k in post.K_RANGE]
-        fs["case"] = case.info()
-        fills[b] = fs
-        for r in a.runs:
-            name = f"b{b}_{r}"
-            run_dir = os.path.join(work, f"b{b}", r)
-            s = post.post_run(run_dir, res, name)
-            if r == "air":
-                vtk_src = os.path.join(run_dir, "VTK")
-                if os.path.isdir(vtk_src):
-                    dst = os.path.join(res, "vtk", name, "openfoam")
-                    shutil.rmtree(dst, ignore_errors=True)
-                    shutil.copytree(vtk_src, dst)
-            summaries.append(s)
-            series[name] = post.read_series(run_dir)
-    # Crewdson estimate with the measured mean outlet gradient.
-    for s in summaries:
-        if s["air"]:
-            ref = [x for x in summaries if x["b_mm"] == s["b_mm"] and not x["air"]]
-            if ref:
-                s["crewdson_kg_s"] = float(post.crewdson(ref[0]["W_kg_s"], s["outlet_dpdz_Pa_m"],
-                                                         fills[s["b_mm"]]["rho_b"]))
-    study_plots(summaries, fills, series, res, a.size)
-    write_summary(summaries, fills, timings, res, time.time() - t_start, a)
-    write_levels(summaries, fills, res)
-    problems = check(summaries, res) if a.check else []
-    print(open(os.path.join(res, "summary.txt")).read())
-    if problems:
-        print("wedge-silo: CHECK FAILED:\n  " + "\n  ".join(problems))
-        sys.exit(1)
-    if a.check:
-        print("wedge-silo: checks passed")
-    print(f"wedge-silo: results in {res}\n"
-          f"  mass_flow.png, outlet_pressure_gradient.png   the study plots\n"
-          f"  summary.txt (.csv, .json)                     rates, gradients, Beverloo band, balance, times\n"
-          f"  b<b>_<air|noair>.csv                          time series (t, mass_flow_kg_s, outlet_dpdz_Pa_m, ...)\n"
-          f"  b<b>_<air|noair>_fields.png, vtk/             void fraction and air pressure fields\n"
-          f"  the OpenFOAM cases (open in ParaView):        {work}/b<b>/air", flush=True)
-
-
-def write_summary(summaries, fills, timings, res, wall, a):
-    with open(os.path.join(res, "summary.json"), "w") as fh:
-        json.dump(dict(size=a.size, fills={str(k): v for k, v in fills.items()}, runs=summaries,
-                       timings=timings, wall_s=wall), fh, indent=1, default=float)
-    with open(os.path.join(res, "summary.csv"), "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(["run", "b_mm", "air", "s", "W_kg_s", "outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa",
-                    "crewdson_kg_s", "beverloo_k3_kg_s", "beverloo_k1_kg_s", "rho_b_kg_m3",
-                    "inserted", "present", "removed", "lost", "run_wall_s"])
-        for s in summaries:
-            f = fills[s["b_mm"]]
-            bal = s["balance"]
-            w.writerow([s["name"], s["b_mm"], int(s["air"]), f"{s['s']:.4g}", f"{s['W_kg_s']:.5g}",
-                        f"{s.get('outlet_dpdz_Pa_m', 0):.5g}", f"{s.get('outlet_p_Pa', 0):.5g}",
-                        f"{s.get('above_p_Pa', 0):.5g}", f"{s.get('crewdson_kg_s', float('nan')):.5g}",
-                        f"{f['beverloo_kg_s'][1]:.5g}", f"{f['beverloo_kg_s'][0]:.5g}",
-                        f"{f['rho_b']:.5g}", bal["inserted"], bal["present"], bal["removed"],
-                        bal["lost"], f"{bal['wall_time_s']:.1f}"])
-    lines = [f"wedge-silo study, size {a.size} (total wall time {wall:.0f} s)", ""]
-    for b, f in sorted(fills.items()):
-        c = f["case"]
-        lines.append(f"b = {b} mm: s = {c['coarse_graining_factor']:.3g}, parcel d = "
-                     f"{c['d_parcel_mean_m'] * 1e3:.3g} mm (b/d = {c['b_over_d_parcel']:.3g}), slice "
-                     f"{c['slice_m'] * 1e3:.3g} mm (x{c['depth_scale']:.3g} to 60 mm), {f['n_parcels']} parcels; "
-                     f"settled fill {f['fill_top_m'] * 1e3:.0f} mm, rho_b = {f['rho_b']:.0f} kg/m3 "
-                     f"(solid fraction {f['solid_fraction']:.3f}); full 60 mm silo at d = 225 um: "
-                     f"{f['full_silo_primaries_d225']:.3g} particles")
-        lines.append(f"   Hagen-Beverloo (C = {post.BEVERLOO_C}, k = 1..3, primary d): "
-                     f"{f['beverloo_kg_s'][1]:.4g} .. {f['beverloo_kg_s'][0]:.4g} kg/s; "
-                     f"with the parcel d: {f['beverloo_parcel_kg_s'][1]:.4g} .. {f['beverloo_parcel_kg_s'][0]:.4g} kg/s")
-    lines.append("")
-    lines.append(f"{'run':14s} {'W [kg/s]':>10s} {'dp/dz [Pa/m]':>13s} {'p_out [Pa]':>11s} "
-                 f"{'p_above [Pa]':>12s} {'Crewdson':>9s} {'balance':>22s} {'wall [s]':>9s}")
-    for s in summaries:
-        bal = s["balance"]
-        lines.append(f"{s['name']:14s} {s['W_kg_s']:10.4g} {s.get('outlet_dpdz_Pa_m', 0):13.4g} "
-                     f"{s.get('outlet_p_Pa', 0):11.4g} {s.get('above_p_Pa', 0):12.4g} "
-                     f"{s.get('crewdson_kg_s', float('nan')):9.4g} "
-                     f"{bal['inserted']:>7d}={bal['present']}+{bal['removed']}"
-                     f"{'' if bal['closes'] else ' OPEN'} {bal['wall_time_s']:9.0f}")
-    if timings:
-        lines.append("")
-        lines.append("Stage times: wall [s] (on this machine, at its load) and CPU [s] of the stage's processes")
-        for tm in sorted(timings, key=lambda x: x["stage"]):
-            lines.append(f"  {tm['stage']:14s} wall {tm['run_s']:8.0f}   cpu {tm['run_cpu_s']:8.0f}")
-        lines.append(f"  total CPU {sum(tm['run_cpu_s'] for tm in timings):.0f} s")
-        fills_cpu = [tm["run_cpu_s"] for tm in timings if tm["stage"].endswith("_fill")]
-        runs_cpu = [tm["run_cpu_s"] for tm in timings if not tm["stage"].endswith("_fill")]
-        idle = makespan(fills_cpu, a.jobs) + makespan(runs_cpu, a.jobs)
-        lines.append(f"  idle-machine estimate with {a.jobs} job(s): {idle:.0f} s of runs (each job a "
-                     f"full core for its CPU time), plus packing and post-processing")
-    lines.append("")
-    lines.append("Expectations (reported, not asserted):")
-    for line in expectations(summaries, fills):
-        lines.append("  " + line)
-    with open(os.path.join(res, "summary.txt"), "w") as fh:
-        fh.write("\n".join(lines) + "\n")
-
-
-def write_levels(summaries, fills, res):
-    """<name>.level.json per run: this run as a fidelity level for `./granair compare`
-    (docs/fidelity-levels.md): coarse-grained DEM, with air (cg-dem-cfd) or without (cg-dem)."""
-    for s in summaries:
-        level = dict(case="wedge-silo", level="cg-dem-cfd" if s["air"] else "cg-dem",
-                     model=f"DEM{'-CFD' if s['air'] else ''}, s = {s['s']:.3g}, {s['size']} size",
-                     b_mm=s["b_mm"], air=bool(s["air"]), steady_mass_flow_kg_s=s["W_kg_s"],
-                     steady_window_s=[s["steady_from_s"], s["steady_to_s"]],
-                     outlet_dpdz_Pa_m=s.get("outlet_dpdz_Pa_m") if s["air"] else None,
-                     wall_time_s=s["balance"]["wall_time_s"], cores=s["np"],
-                     timeseries=f"{s['name']}.csv", parcels=fills[s["b_mm"]]["n_parcels"],
-                     coarse_graining_factor=s["s"])
-        with open(os.path.join(res, f"{s['name']}.level.json"), "w") as fh:
-            json.dump(level, fh, indent=1, default=float)
-
-
-def makespan(durations, jobs):
-    """Wall time of tasks started in order on `jobs` slots (as the pool runs them)."""
-    slots = [0.0] * max(1, jobs)
-    for d in durations:
-        i = slots.index(min(slots))
-        slots[i] += d
-    return max(slots) if durations else 0.0
-
-
-def expectations(summaries, fills):
-    by = {(s["b_mm"], s["air"]): s for s in summaries}
-    bs = sorted({s["b_mm"] for s in summaries})
-    out = []
-    for b in bs:
-        if (b, True) in by and (b, False) in by:
-            wa, w0 = by[(b, True)]["W_kg_s"], by[(b, False)]["W_kg_s"]
-            out.append(f"b = {b}: with air W {wa:.4g} {'<' if wa < w0 else '>='} without {w0:.4g} kg/s "
-                       f"({100 * (wa / w0 - 1):+.1f} %) -> {'agrees' if wa < w0 else 'DISAGREES'}")
-        if (b, True) in by:
-            p = by[(b, True)]["above_p_Pa"]
-            out.append(f"b = {b}: mean air pressure about b above the orifice {p:.3g} Pa "
-                       f"-> {'below ambient, agrees' if p < 0 else 'NOT below ambient'}")
-        if (b, False) in by:
-            w0 = by[(b, False)]["W_kg_s"]
-            lo, hi = fills[b]["beverloo_kg_s"][1], fills[b]["beverloo_kg_s"][0]
-            where = "inside" if lo <= w0 <= hi else ("above" if w0 > hi else "below")
-            out.append(f"b = {b}: DEM-only W {w0:.4g} kg/s is {where} the Beverloo band "
-                       f"{lo:.4g}..{hi:.4g} (x{w0 / (0.5 * (lo + hi)):.2f} of its middle)")
-    for air in (True, False):
-        ws = [by[(b, air)]["W_kg_s"] for b in bs if (b, air) in by]
-        if len(ws) > 1:
-            inc = all(x < y for x, y in zip(ws, ws[1:]))
-            out.append(f"{'with air' if air else 'DEM only'}: W grows with b: "
-                       f"{' < '.join(f'{w:.3g}' for w in ws)} -> {'agrees' if inc else 'DISAGREES'}")
-    g = [by[(b, True)]["outlet_dpdz_Pa_m"] for b in bs if (b, True) in by]
-    if len(g) > 1:
-        inc = all(abs(x) < abs(y) for x, y in zip(g, g[1:]))
-        out.append(f"outlet |dp/dz| grows with b: {' , '.join(f'{x:.4g}' for x in g)} Pa/m -> "
-                   f"{'agrees' if inc else 'DISAGREES'}")
-    return out
-
-
-def check(summaries, res):
-    """Hard checks (the case test): accounting, positive flow, sub-ambient outlet, outputs."""
-    problems = []
-    for s in summaries:
-        n = s["name"]
-        bal = s["balance"]
-        if not bal["closes"]:
-            problems.append(f"{n}: accounting does not close: inserted {bal['inserted']} != present "
-                            f"{bal['present']} + removed {bal['removed']} (lost {bal['lost']})")
-        with open(os.path.join(res, f"{n}.csv")) as fh:
-            head = next(csv.reader(fh))
-        for col in ("t", "mass_flow_kg_s", "outlet_dpdz_Pa_m"):
-            if col not in head:
-                problems.append(f"{n}: column {col} missing from {n}.csv")
-        if not s["W_kg_s"] > 0:
-            problems.append(f"{n}: steady mass flow is {s['W_kg_s']} kg/s, expected > 0")
-        if s["air"] and not s["outlet_p_mean_discharging_Pa"] < 0:
-            problems.append(f"{n}: mean outlet air pressure while discharging "
-                            f"{s['outlet_p_mean_discharging_Pa']:.4g} Pa, expected < 0 (below ambient)")
-        if not s.get("png") or not os.path.exists(s["png"]):
-            problems.append(f"{n}: field picture missing")
-        for t in s["field_times"]:
-            if not os.path.exists(os.path.join(res, "vtk", n, f"{n}_cells_t{t:g}.vtk")):
-                problems.append(f"{n}: VTK file for t = {t:g} s missing")
-        if 0 not in s["field_times"]:
-            problems.append(f"{n}: no fields at t = 0")
-        if s["air"] and not os.path.isdir(os.path.join(res, "vtk", n, "openfoam")):
-            problems.append(f"{n}: foamToVTK output missing")
-    for f in ("mass_flow.png", "outlet_pressure_gradient.png", "summary.csv"):
-        if not os.path.exists(os.path.join(res, f)):
-            problems.append(f"{f} missing")
-    return problems
+    post_study(a, work, res, timings, time.time() - t0)
 
 
 if __name__ == "__main__":
-    main()
+    gc.cli.main(main)

@@ -47,6 +47,7 @@ Reference
 #include "GranularMixture.H"
 #include "PowderBalance.H"
 #include "Reconstruct.H"
+#include "TimeControls.H"
 using Foam::granair::reconstructVector;
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
@@ -94,6 +95,7 @@ int main(int argc, char* argv[])
     #include "setRootCase.H"
     Foam::granair::MpiSession mpi(argc, argv);
     #include "createTime.H"
+    Foam::granair::checkTimeControls(runTime);
     #include "createMesh.H"
 
     try

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -33,28 +34,37 @@ public:
                 return;
             }
             if (key == "{" || key == ";") error("expected a keyword, found '", key, "'");
+            if (key == "(" || key == ")") error("expected a keyword, found '", key, "' (a list without a keyword?)");
+            const int keyLine = line_;
+            if (d.line_.count(key))
+                error("key '", d.path_.empty() ? key : d.path_ + "." + key, "' given twice (first on line ",
+                      d.line_.at(key), ")");
+            d.line_[key] = keyLine;
             std::string tok = next();
             if (tok == "{") {
                 auto sub = std::make_shared<Dictionary>(
                     d.source_, d.path_.empty() ? key : d.path_ + "." + key);
                 parseInto(*sub, false);
-                if (!d.dicts_.count(key) && !d.entries_.count(key)) d.order_.push_back(key);
-                d.entries_.erase(key);
+                d.order_.push_back(key);
+                d.endLine_[key] = line_;
                 d.dicts_[key] = sub;
                 continue;
             }
             std::vector<std::string> value;
             int depth = 0;
             while (tok != ";" || depth > 0) {
-                if (tok.empty()) error("entry '", key, "' is not closed by ';'");
+                if (tok.empty()) error("entry '", key, "' (line ", keyLine, ") is not closed by ';'");
                 if (tok == "(") ++depth;
                 if (tok == ")") --depth;
-                if (tok == "{" || tok == "}") error("entry '", key, "': unexpected '", tok, "' before ';'");
+                if (tok == "{" || tok == "}")
+                    error("entry '", key, "' (line ", keyLine, "): unexpected '", tok, "' before ';'",
+                          line_ > keyLine ? " (is a ';' missing at the end of line " + std::to_string(keyLine) + "?)"
+                                          : std::string());
                 value.push_back(tok);
                 tok = next();
             }
-            if (!d.dicts_.count(key) && !d.entries_.count(key)) d.order_.push_back(key);
-            d.dicts_.erase(key);
+            d.order_.push_back(key);
+            d.endLine_[key] = line_;
             d.entries_[key] = std::move(value);
         }
     }
@@ -117,6 +127,7 @@ private:
 Dictionary Dictionary::fromString(const std::string& text, const std::string& source) {
     Dictionary d(source);
     DictionaryParser(text, source).parseInto(d, true);
+    d.allow({"FoamFile"});  // OpenFOAM's header: nobody reads it
     return d;
 }
 
@@ -134,13 +145,81 @@ std::string Dictionary::where(const std::string& key) const {
 }
 
 bool Dictionary::has(const std::string& key) const {
+    markKnown(key);
     return entries_.count(key) || dicts_.count(key);
 }
-bool Dictionary::isDict(const std::string& key) const { return dicts_.count(key) > 0; }
+bool Dictionary::isDict(const std::string& key) const {
+    markKnown(key);
+    return dicts_.count(key) > 0;
+}
 
-std::vector<std::string> Dictionary::keys() const { return order_; }
+std::vector<std::string> Dictionary::keys() const {
+    allKnown_ = true;
+    return order_;
+}
+
+void Dictionary::allow(std::initializer_list<const char*> keys) const {
+    for (const char* k : keys) markKnown(k);
+}
+
+int Dictionary::line(const std::string& key) const {
+    auto it = line_.find(key);
+    return it == line_.end() ? 0 : it->second;
+}
+
+namespace {
+
+// Edit distance, case-insensitive: how far a misspelled key is from a known one.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                              std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (same ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+void Dictionary::checkKnownKeys() const {
+    for (const std::string& key : order_) {
+        if (!allKnown_ && !known_.count(key)) {
+            // Suggest among the keys this dictionary's readers asked for
+            // (present or not); FoamFile is no suggestion.
+            std::string closest, list;
+            std::size_t best = std::string::npos;
+            for (const std::string& k : known_) {
+                if (k == "FoamFile") continue;
+                list += (list.empty() ? "" : ", ") + k;
+                const std::size_t dist = editDistance(key, k);
+                if (dist < best) {
+                    best = dist;
+                    closest = k;
+                }
+            }
+            fail<InputError>("file '", source_, "' line ", line(key), ": unknown key '",
+                             path_.empty() ? key : path_ + "." + key, "'",
+                             closest.empty() ? std::string(" (no keys are read here)")
+                                             : " (did you mean '" + closest + "'? known here: " + list + ")");
+        }
+        auto sub = dicts_.find(key);
+        // A sub-dictionary nobody looked into is not checked (it was allowed
+        // whole, or its reader iterates it: keys()).
+        if (sub != dicts_.end() && (!sub->second->known_.empty() || sub->second->allKnown_))
+            sub->second->checkKnownKeys();
+    }
+}
 
 const Dictionary& Dictionary::subDict(const std::string& key) const {
+    markKnown(key);
     auto it = dicts_.find(key);
     if (it == dicts_.end())
         fail<InputError>(where(key), ": missing sub-dictionary (expected '", key, " { ... }')");
@@ -148,6 +227,7 @@ const Dictionary& Dictionary::subDict(const std::string& key) const {
 }
 
 const std::vector<std::string>& Dictionary::tokens(const std::string& key) const {
+    markKnown(key);
     auto it = entries_.find(key);
     if (it == entries_.end()) {
         if (dicts_.count(key)) fail<InputError>(where(key), ": expected a value, found a sub-dictionary");
@@ -156,9 +236,21 @@ const std::vector<std::string>& Dictionary::tokens(const std::string& key) const
     return it->second;
 }
 
+void Dictionary::badValue(const std::string& key, const std::string& what) const {
+    const auto& t = entries_.at(key);
+    std::string found;
+    for (const std::string& w : t) found += (found.empty() ? "" : " ") + w;
+    const int first = line(key), last = endLine_.count(key) ? endLine_.at(key) : first;
+    std::string hint;
+    if (t.size() > 1 && last > first)
+        hint = " (is a ';' missing at the end of line " + std::to_string(first) + "?)";
+    fail<InputError>(where(key), first > 0 ? " (line " + std::to_string(first) + ")" : std::string(),
+                     ": expected ", what, ", found '", found, "'", hint);
+}
+
 std::string Dictionary::getString(const std::string& key) const {
     const auto& t = tokens(key);
-    if (t.size() != 1) fail<InputError>(where(key), ": expected a single word");
+    if (t.size() != 1) badValue(key, "a single word");
     return t[0];
 }
 std::string Dictionary::getString(const std::string& key, const std::string& fallback) const {
@@ -176,8 +268,7 @@ static bool parseDouble(const std::string& s, double& v) {
 double Dictionary::getDouble(const std::string& key) const {
     const auto& t = tokens(key);
     double v;
-    if (t.size() != 1 || !parseDouble(t[0], v))
-        fail<InputError>(where(key), ": expected a number, found '", t.empty() ? "" : t[0], "'");
+    if (t.size() != 1 || !parseDouble(t[0], v)) badValue(key, "a number");
     if (!std::isfinite(v)) fail<InputError>(where(key), ": expected a finite number, found '", t[0], "'");
     return v;
 }
@@ -195,8 +286,7 @@ long Dictionary::getInt(const std::string& key) const {
     const auto& t = tokens(key);
     char* end = nullptr;
     long v = t.size() == 1 ? std::strtol(t[0].c_str(), &end, 10) : 0;
-    if (t.size() != 1 || end != t[0].c_str() + t[0].size() || t[0].empty())
-        fail<InputError>(where(key), ": expected an integer, found '", t.empty() ? "" : t[0], "'");
+    if (t.size() != 1 || end != t[0].c_str() + t[0].size() || t[0].empty()) badValue(key, "an integer");
     return v;
 }
 long Dictionary::getInt(const std::string& key, long fallback) const {
@@ -215,8 +305,13 @@ Vec3 Dictionary::getVec3(const std::string& key) const {
     const auto& t = tokens(key);
     Vec3 v;
     if (t.size() != 5 || t[0] != "(" || t[4] != ")" || !parseDouble(t[1], v.x()) ||
-        !parseDouble(t[2], v.y()) || !parseDouble(t[3], v.z()) || !v.allFinite())
-        fail<InputError>(where(key), ": expected a vector '(x y z)'");
+        !parseDouble(t[2], v.y()) || !parseDouble(t[3], v.z()))
+        badValue(key, "a vector '(x y z)'");
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(v[a]))
+            fail<InputError>(where(key), line(key) > 0 ? " (line " + std::to_string(line(key)) + ")" : std::string(),
+                             ": component ", "xyz"[a], " of the vector is '", t[1 + a],
+                             "', expected finite numbers '(x y z)'");
     return v;
 }
 Vec3 Dictionary::getVec3(const std::string& key, const Vec3& fallback) const {
@@ -225,13 +320,13 @@ Vec3 Dictionary::getVec3(const std::string& key, const Vec3& fallback) const {
 
 void Dictionary::set(const std::string& key, const std::string& value) {
     Dictionary parsed = fromString(key + " " + value + ";", source_);
-    if (!has(key)) order_.push_back(key);
+    if (!entries_.count(key) && !dicts_.count(key)) order_.push_back(key);
     dicts_.erase(key);
     entries_[key] = parsed.entries_.at(key);
 }
 
 Dictionary& Dictionary::addDict(const std::string& key) {
-    if (!has(key)) order_.push_back(key);
+    if (!entries_.count(key) && !dicts_.count(key)) order_.push_back(key);
     entries_.erase(key);
     auto& p = dicts_[key];
     if (!p) p = std::make_shared<Dictionary>(source_, path_.empty() ? key : path_ + "." + key);

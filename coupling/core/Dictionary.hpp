@@ -6,9 +6,20 @@
 // comments; the FoamFile header block is read like any other sub-dictionary.
 // Every getter that fails names the file, the full key path and what was
 // expected, so bad input never surfaces as a bare exception.
+//
+// Strict: a key given twice in one dictionary is an error (with both lines);
+// syntax errors name the line. Unknown keys: every lookup (has, subDict,
+// get*) records the key it asked for as known, so the readers declare their
+// keys simply by reading them (defaults included: get(key, fallback) asks
+// too); keys() marks every key known (a reader of user-named entries);
+// allow() declares keys a reader deliberately ignores. Once every reader has
+// read, checkKnownKeys() throws InputError for the first key nobody asked
+// for, naming the file, its line, the key and the closest known key.
 #pragma once
+#include <initializer_list>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,7 +39,19 @@ public:
     bool has(const std::string& key) const;
     bool isDict(const std::string& key) const;
     const Dictionary& subDict(const std::string& key) const;
+    // Every key in file order; marks them all known.
     std::vector<std::string> keys() const;
+
+    // Keys a reader accepts without reading them (e.g. `monitors` of a
+    // DEM-only run: nothing in them is used, nothing in them is checked).
+    void allow(std::initializer_list<const char*> keys) const;
+    // Throws InputError for the first key of this dictionary or of a
+    // sub-dictionary that some reader looked into, that no reader asked for:
+    // "file 'F' line L: unknown key 'drag.swichVoidFraction' (did you mean
+    // 'switchVoidFraction'? known here: switchVoidFraction, type)".
+    void checkKnownKeys() const;
+    // Line of a key in its file (0 if set programmatically or missing).
+    int line(const std::string& key) const;
 
     // Raw tokens of an entry, e.g. {"(", "0", "0", "-9.81", ")"}.
     const std::vector<std::string>& tokens(const std::string& key) const;
@@ -59,6 +82,14 @@ private:
     std::map<std::string, std::vector<std::string>> entries_;
     std::map<std::string, std::shared_ptr<Dictionary>> dicts_;
     std::vector<std::string> order_;
+    std::map<std::string, int> line_, endLine_;  // line of the key, of its ';'
+    mutable std::set<std::string> known_;  // keys some reader asked for
+    mutable bool allKnown_ = false;        // keys() was called
+
+    void markKnown(const std::string& key) const { known_.insert(key); }
+    // "expected <what>, found '...'" with the line, and a hint at a missing
+    // ';' when the value runs over several lines.
+    [[noreturn]] void badValue(const std::string& key, const std::string& what) const;
 
     friend class DictionaryParser;
 };

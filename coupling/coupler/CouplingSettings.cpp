@@ -9,6 +9,11 @@ CouplingSettings CouplingSettings::read(const Dictionary& dict) {
     if (dict.getDouble("couplingInterval") != s.couplingInterval)
         fail<InputError>(dict.where("couplingInterval"), ": expected a whole number of DEM steps");
     s.airOn = dict.getBool("air", true);
+    const std::string coupling = dict.getString("momentumCoupling", "two-way");
+    if (coupling != "two-way" && coupling != "one-way")
+        fail<InputError>(dict.where("momentumCoupling"), ": '", coupling,
+                         "', expected two-way (the default) or one-way");
+    s.oneWay = coupling == "one-way";
     if (dict.has("coarseGrainingFactor"))
         s.coarseGrainingFactor = dict.getDouble("coarseGrainingFactor", 1.0, 1000.0);
     if (dict.has("voidFractionFloor"))

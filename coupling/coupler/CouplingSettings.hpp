@@ -4,6 +4,8 @@
 //
 //   couplingInterval    50;          // DEM steps per CFD step (N), >= 1
 //   air                 on;          // off: DEM-only reference run, same case
+//   momentumCoupling    two-way;     // one-way: forces on the particles only;
+//                                    // the air sees no particles (eps 1, no drag)
 //   coarseGrainingFactor 1;          // parcel = s^3 primary particles, s >= 1
 //   voidFractionFloor   0.3;         // eps is floored here (hits are counted)
 //   gravity             (0 0 -9.81); // [m/s2], for the particles' buoyancy
@@ -24,6 +26,7 @@ namespace granair {
 struct CouplingSettings {
     int couplingInterval = 1;
     bool airOn = true;
+    bool oneWay = false;  // momentumCoupling one-way (MFiX's DES_ONEWAY_COUPLED, CFDEM's checks)
     double coarseGrainingFactor = 1.0;
     double voidFractionFloor = 0.3;
     Vec3 gravity{0, 0, -9.81};

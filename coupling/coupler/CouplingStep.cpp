@@ -4,13 +4,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/CapacityBytes.hpp"
 #include "core/Error.hpp"
 
 namespace granair {
 
 // Parcel volume [m3] from its radius.
-static double volume(const OwnedParticle& p) {
-    const double r = p.state.radius;
+static double volume(const ParticleState& p) {
+    const double r = p.radius;
     return 4.0 / 3.0 * M_PI * r * r * r;
 }
 
@@ -19,7 +20,7 @@ CouplingStep::CouplingStep(const CouplingSettings& settings, const CellLocator& 
     if (!settings_.voidFraction) fail("CouplingStep: a void-fraction model is required");
 }
 
-void CouplingStep::voidFraction(const std::vector<OwnedParticle>& owned, double* eps) {
+void CouplingStep::voidFraction(const OwnedParticles& owned, double* eps) {
     const int nCells = mesh_.nCells();
     const std::size_t np = owned.size();
 
@@ -29,9 +30,9 @@ void CouplingStep::voidFraction(const std::vector<OwnedParticle>& owned, double*
     weights_.clear();
     solid_.assign(nCells, 0.0);
     for (std::size_t p = 0; p < np; ++p) {
-        const OwnedParticle& op = owned[p];
-        const double vp = volume(op);
-        settings_.voidFraction->stencil(mesh_, op.state, op.cell, scratch_);
+        const ParticleState& ps = owned.state(p);
+        const double vp = volume(ps);
+        settings_.voidFraction->stencil(mesh_, ps, owned.cell(p), scratch_);
         for (const CellWeight& cw : scratch_) {
             solid_[cw.cell] += cw.weight * vp;
             weights_.push_back(cw);
@@ -53,7 +54,7 @@ void CouplingStep::voidFraction(const std::vector<OwnedParticle>& owned, double*
     }
 }
 
-void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, const double* Ucell,
+void CouplingStep::particlesToCells(const OwnedParticles& owned, const double* Ucell,
                                     double* eps, double* K, double* Us) {
     if (!settings_.drag) fail("CouplingStep::particlesToCells: a drag law is required when the air is on");
     voidFraction(owned, eps);
@@ -73,13 +74,14 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
             uf += cw.weight * Vec3(Ucell[3 * cw.cell], Ucell[3 * cw.cell + 1], Ucell[3 * cw.cell + 2]);
             epsP += cw.weight * eps[cw.cell];
         }
-        const double dParcel = 2.0 * owned[p].state.radius;
+        const ParticleState& ps = owned.state(p);
+        const double dParcel = 2.0 * ps.radius;
         double b = 0.0;
         if (settings_.dragForce) {
             try {
-                b = parcelBeta(*settings_.drag, dParcel, s, epsP, (uf - owned[p].state.v).norm(), fluid_);
+                b = parcelBeta(*settings_.drag, dParcel, s, epsP, (uf - ps.v).norm(), fluid_);
             } catch (const InputError& e) {
-                fail<InputError>("particle ", owned[p].state.id, " at (", owned[p].state.x.transpose(),
+                fail<InputError>("particle ", ps.id, " at (", ps.x.transpose(),
                                  "): ", e.what());
             }
         }
@@ -88,7 +90,7 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
             const CellWeight& cw = weights_[k];
             const double wb = cw.weight * b;
             sumBeta_[cw.cell] += wb;
-            for (int a = 0; a < 3; ++a) Us[3 * cw.cell + a] += wb * owned[p].state.v[a];
+            for (int a = 0; a < 3; ++a) Us[3 * cw.cell + a] += wb * ps.v[a];
         }
     }
     for (int c = 0; c < nCells; ++c) {
@@ -98,7 +100,7 @@ void CouplingStep::particlesToCells(const std::vector<OwnedParticle>& owned, con
     }
 }
 
-void CouplingStep::cellsToParticles(const std::vector<OwnedParticle>& owned, const double* Ucell,
+void CouplingStep::cellsToParticles(const OwnedParticles& owned, const double* Ucell,
                                     const double* gradPcell, std::vector<double>& forces,
                                     std::vector<double>* drag) const {
     const std::size_t np = beta_.size();
@@ -116,8 +118,9 @@ void CouplingStep::cellsToParticles(const std::vector<OwnedParticle>& owned, con
             uf += cw.weight * Vec3(Ucell[3 * c], Ucell[3 * c + 1], Ucell[3 * c + 2]);
             gp += cw.weight * Vec3(gradPcell[3 * c], gradPcell[3 * c + 1], gradPcell[3 * c + 2]);
         }
-        const double vp = volume(owned[p]);
-        const Vec3 fd = beta_[p] * (uf - owned[p].state.v);
+        const ParticleState& ps = owned.state(p);
+        const double vp = volume(ps);
+        const Vec3 fd = beta_[p] * (uf - ps.v);
         Vec3 f = fd;
         if (settings_.pressureGradientForce) f -= vp * gp;
         if (settings_.buoyancyForce) f += vp * buoyancyPerVolume;
@@ -127,13 +130,6 @@ void CouplingStep::cellsToParticles(const std::vector<OwnedParticle>& owned, con
         }
     }
 }
-
-namespace {
-template <class T>
-std::size_t capacityBytes(const std::vector<T>& v) {
-    return v.capacity() * sizeof(T);
-}
-}  // namespace
 
 std::size_t CouplingStep::particleBufferBytes() const {
     return capacityBytes(offset_) + capacityBytes(weights_) + capacityBytes(beta_) + capacityBytes(scratch_);

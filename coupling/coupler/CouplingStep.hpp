@@ -45,18 +45,18 @@ public:
 
     // The first half of step 1: stencils, solid volume and the (floored)
     // void fraction eps of every local cell (1 per cell); updates stats().
-    void voidFraction(const std::vector<OwnedParticle>& owned, double* eps);
+    void voidFraction(const OwnedParticles& owned, double* eps);
 
     // Step 1. Ucell: air velocity per local cell (3 doubles each) from the
     // previous air step. Writes eps, K (1 per cell) and Us (3 per cell).
-    void particlesToCells(const std::vector<OwnedParticle>& owned, const double* Ucell,
+    void particlesToCells(const OwnedParticles& owned, const double* Ucell,
                           double* eps, double* K, double* Us);
 
     // Step 3. `owned` as given to particlesToCells; Ucell, gradPcell: new air
     // velocity and pressure gradient [Pa/m] per cell. Writes 3 doubles per
     // owned particle (same order) into forces, and the drag part alone into
     // *drag when given (tests, output).
-    void cellsToParticles(const std::vector<OwnedParticle>& owned, const double* Ucell,
+    void cellsToParticles(const OwnedParticles& owned, const double* Ucell,
                           const double* gradPcell, std::vector<double>& forces,
                           std::vector<double>* drag = nullptr) const;
 

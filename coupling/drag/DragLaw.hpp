@@ -43,7 +43,8 @@ public:
 double parcelBeta(const DragLaw& law, double dParcel, double s, double eps, double slip,
                   const FluidProperties& f);
 
-// The registry of drag laws, filled by registerDragLaws() on first use.
+// The registry of drag laws (registerDragLaws.cpp), filled on first use from
+// the list in drag/sources.cmake.
 const Registry<DragLaw>& dragLaws();
 
 }  // namespace granair

@@ -9,22 +9,15 @@
 
 namespace granair {
 
-namespace {
-bool validSwitch(double s) { return s > 0 && s <= 1; }  // false for NaN too
-}  // namespace
-
 ErgunGidaspow::ErgunGidaspow(double switchVoidFraction) : switch_(switchVoidFraction) {
-    if (!validSwitch(switch_))
-        fail<InputError>("drag law ", typeName, ": switchVoidFraction ", switch_, " outside (0, 1]");
+    if (!(switch_ > 0 && switch_ <= 1))  // false for NaN too
+        failParameter("switchVoidFraction", "drag law ", typeName, ": switchVoidFraction value ", switch_,
+                      " outside (0, 1], expected the void fraction above which ", typeName,
+                      " uses Wen-Yu instead of Ergun");
 }
 
 std::unique_ptr<DragLaw> ErgunGidaspow::fromDictionary(const Dictionary& dict) {
-    const char* key = "switchVoidFraction";
-    const double s = dict.getDouble(key, defaultSwitchVoidFraction);
-    if (!validSwitch(s))
-        fail<InputError>(dict.where(key), ": value ", s, " outside (0, 1], expected the void fraction ",
-                         "above which ", typeName, " uses Wen-Yu instead of Ergun");
-    return std::make_unique<ErgunGidaspow>(s);
+    return std::make_unique<ErgunGidaspow>(dict.getDouble("switchVoidFraction", defaultSwitchVoidFraction));
 }
 
 double ErgunGidaspow::beta(double d, double eps, double slip, const FluidProperties& f) const {

@@ -40,9 +40,9 @@ public:
     static constexpr const char* typeName = "ErgunGidaspow";
     static constexpr double defaultSwitchVoidFraction = 0.8;
 
-    // Throws InputError unless 0 < switchVoidFraction <= 1.
+    // Throws ParameterError (an InputError, core/Registry.hpp) unless 0 < switchVoidFraction <= 1.
     explicit ErgunGidaspow(double switchVoidFraction = defaultSwitchVoidFraction);
-    // Reads switchVoidFraction (optional); errors name the file and key.
+    // Reads switchVoidFraction (optional); through the registry errors name the file and key.
     static std::unique_ptr<DragLaw> fromDictionary(const Dictionary& dict);
 
     std::string name() const override { return typeName; }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/Collective.hpp"
+#include "core/CapacityBytes.hpp"
 #include "core/Error.hpp"
 #include "exchange/RankBoxIndex.hpp"
 #include "exchange/RecordMessage.hpp"
@@ -47,8 +48,28 @@ struct FirstError {
 
 }  // namespace
 
+namespace {
+
+// Problems of one forward() on this rank: the first error (raised on all
+// ranks together at the end) and the particles in no rank's cells.
+struct ForwardProblems {
+    FirstError error;
+    ParticleExchange::Outside outsidePolicy = ParticleExchange::Outside::error;
+    std::int64_t outside = 0;
+    template <class... Parts>
+    void outsideMesh(const Parts&... parts) {
+        if (outsidePolicy == ParticleExchange::Outside::skip)
+            ++outside;
+        else
+            error.note(parts...);
+    }
+};
+
+}  // namespace
+
 struct ParticleExchange::Impl {
     MPI_Comm comm = MPI_COMM_NULL;  // private duplicate of the user's comm
+    int rank = 0;
     RankBoxIndex boxes;             // inflated CFD boxes of all ranks
     std::uint64_t forwardCalls = 0;
     bool routesValid = false;     // last forward() succeeded
@@ -72,7 +93,7 @@ struct ParticleExchange::Impl {
     std::vector<Outbox> outboxes;  // the first nOutboxes are in use (reused storage)
     int nOutboxes = 0;
     std::vector<int> outboxOfRank;  // rank -> outbox or -1 (O(nRanks), like the bounds)
-    // Records this rank is itself a candidate for (never go through MPI).
+    // Records this rank is itself a candidate for: dem indices (never sent).
     std::vector<int> selfDem, selfCell;
     std::vector<char> selfMulti, selfKeep;
     // Particles with several candidates, and their candidates in rank order.
@@ -117,13 +138,13 @@ struct ParticleExchange::Impl {
     std::vector<double> values;  // backward(): received values
     std::vector<MPI_Request> requests;
 
-    int outboxFor(int rank) {
-        int& b = outboxOfRank[rank];
+    int outboxFor(int r) {
+        int& b = outboxOfRank[r];
         if (b >= 0) return b;
         b = nOutboxes++;
         if (static_cast<int>(outboxes.size()) < nOutboxes) outboxes.emplace_back();
         Outbox& o = outboxes[b];
-        o.rank = rank;
+        o.rank = r;
         o.message.clear();
         o.multi.clear();
         o.dem.clear();
@@ -131,8 +152,307 @@ struct ParticleExchange::Impl {
         o.keep.clear();
         return b;
     }
+
+    bool selfOwns(std::size_t j) const { return selfMulti[j] ? selfKeep[j] != 0 : selfCell[j] >= 0; }
+
+    // The phases of forward(), in order (see ParticleExchange.hpp).
+    void findCandidates(const std::vector<ParticleState>& dem, ExchangeStats& stats, ForwardProblems& pr);
+    void sendRecords(ExchangeStats& stats);
+    void locate(const CellLocator& mesh, const std::vector<ParticleState>& dem, ForwardProblems& pr);
+    void replyFound(ExchangeStats& stats);
+    void chooseOwners(const std::vector<ParticleState>& dem, ForwardProblems& pr);
+    void sendDecisions(ExchangeStats& stats);
+    void buildRoutes(const std::vector<ParticleState>& dem, OwnedParticles& owned);
 };
 
+// ---- 1. candidates, records packed per destination ----
+void ParticleExchange::Impl::findCandidates(const std::vector<ParticleState>& dem, ExchangeStats& stats,
+                                            ForwardProblems& pr) {
+    for (int b = 0; b < nOutboxes; ++b) outboxOfRank[outboxes[b].rank] = -1;
+    nOutboxes = 0;
+    selfDem.clear();
+    // selfCell keeps the last step's cells: they are the first hints in locate().
+    selfMulti.clear();
+    multis.clear();
+    multiCandidates.clear();
+    for (int i = 0; i < static_cast<int>(dem.size()); ++i) {
+        const ParticleState& p = dem[i];
+        if (!p.x.allFinite()) {
+            pr.error.note("particle ", p.id, " has a non-finite position ", show(p.x),
+                          "; expected finite coordinates [m]");
+            continue;
+        }
+        if (!p.v.allFinite()) {
+            pr.error.note("particle ", p.id, " at ", show(p.x), " has a non-finite velocity ", show(p.v),
+                          "; expected finite components [m/s]");
+            continue;
+        }
+        if (!(p.radius > 0) || !std::isfinite(p.radius)) {
+            pr.error.note("particle ", p.id, " at ", show(p.x), " has radius ", p.radius,
+                          " m; expected a finite radius > 0");
+            continue;
+        }
+        boxes.find(p.x, candidates);
+        if (candidates.empty()) {
+            pr.outsideMesh("particle ", p.id, " at ", show(p.x),
+                           " is outside the CFD mesh (in no rank's CFD subdomain box)");
+            continue;
+        }
+        const bool multi = candidates.size() > 1;
+        if (multi)
+            multis.push_back({i, static_cast<int>(multiCandidates.size()), static_cast<int>(candidates.size())});
+        for (int r : candidates) {
+            ++stats.particlesSent;
+            if (r == rank) {
+                if (multi) multiCandidates.push_back({r, -1, static_cast<int>(selfDem.size())});
+                selfDem.push_back(i);
+                selfMulti.push_back(multi);
+                continue;
+            }
+            const int b = outboxFor(r);
+            Outbox& o = outboxes[b];
+            if (multi) {
+                multiCandidates.push_back({r, b, static_cast<int>(o.multi.size())});
+                o.multi.push_back(static_cast<std::int64_t>(o.dem.size()));
+            }
+            o.dem.push_back(i);
+            record::append(o.message, p);
+        }
+    }
+}
+
+// ---- 2. records to the remote candidates (NBX) ----
+void ParticleExchange::Impl::sendRecords(ExchangeStats& stats) {
+    std::vector<SparseSend> sends;
+    sends.reserve(nOutboxes);
+    for (int b = 0; b < nOutboxes; ++b) {
+        Outbox& o = outboxes[b];
+        record::appendTrailer(o.message, o.multi);
+        sends.push_back({o.rank, o.message.data(), o.message.size()});
+        stats.bytesSent += static_cast<std::int64_t>(o.message.size());
+    }
+    stats.partners = nOutboxes;
+    sparseExchange(comm, kTagRecords[forwardCalls++ % 2], sends, inbox);
+}
+
+// ---- 3. locate: own records, then inbound ones ----
+void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<ParticleState>& dem,
+                                    ForwardProblems& pr) {
+    // Two hints before the locator's global search (which costs tens of
+    // microseconds per particle on thin or skewed meshes):
+    // - own particles: the cell found at the same position of the list in the
+    //   last forward(). The DEM keeps its local order between re-sorts, and a
+    //   particle moves less than a cell per coupling step, so this is mostly
+    //   the particle's own last cell (no per-particle storage beyond the
+    //   selfCell list this class keeps anyway);
+    // - then the previous record's cell: DEM codes sort their particles in
+    //   space, so neighbours in the list are mostly in the same or an
+    //   adjacent cell (this also covers the steps right after a re-sort).
+    // Hints only choose where to look first; a wrong one never gives a wrong cell.
+    int hint = -1;
+    const std::size_t previous = selfCell.size();
+    selfCell.resize(selfDem.size());
+    for (std::size_t j = 0; j < selfDem.size(); ++j) {
+        const ParticleState& p = dem[selfDem[j]];
+        const int near = j < previous ? mesh.findCellNear(p.x, selfCell[j]) : -1;
+        selfCell[j] = near >= 0 ? near : mesh.findCell(p.x, hint);
+        if (selfCell[j] >= 0) hint = selfCell[j];
+        if (selfCell[j] < 0 && !selfMulti[j])
+            pr.outsideMesh("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank,
+                           "'s CFD box but in none of its cells)");
+    }
+    nInbound = static_cast<int>(inbox.messages.size());
+    if (static_cast<int>(inbound.size()) < nInbound) inbound.resize(nInbound);
+    cells.clear();
+    for (int n = 0; n < nInbound; ++n) {
+        const SparseMessage& msg = inbox.messages[n];
+        Inbound& in = inbound[n];
+        in.rank = msg.rank;
+        in.records = inbox.bytes.data() + msg.offset;
+        in.firstCell = cells.size();
+        in.foundMulti = 0;
+        if (!record::parse(in.records, msg.bytes, in.layout)) {
+            // Cannot happen with messages written by this class; reported, not trusted.
+            pr.error.note("ParticleExchange: malformed record message of ", msg.bytes, " bytes from rank ",
+                          msg.rank);
+            in.layout = record::Layout{};
+        }
+        in.found.assign(in.layout.nMulti, 0);
+        std::size_t mi = 0;
+        for (std::size_t k = 0; k < in.layout.nRecords; ++k) {
+            const ParticleState p = record::read(in.records, k);
+            const int cell = mesh.findCell(p.x, hint);
+            if (cell >= 0) hint = cell;
+            cells.push_back(cell);
+            if (mi < in.layout.nMulti && record::multiAt(in.layout, mi) == static_cast<std::int64_t>(k)) {
+                in.found[mi++] = cell >= 0;
+                in.foundMulti += cell >= 0;
+            } else if (cell < 0) {
+                pr.outsideMesh("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank,
+                               "'s CFD box but in none of its cells)");
+            }
+        }
+    }
+}
+
+// ---- 4. found flags of the multi records back to their DEM owners ----
+void ParticleExchange::Impl::replyFound(ExchangeStats& stats) {
+    // Pattern known on both sides: an outbox with multi records expects one
+    // reply; an inbound message with multi records sends one.
+    requests.clear();
+    for (int b = 0; b < nOutboxes; ++b) {
+        Outbox& o = outboxes[b];
+        if (o.multi.empty()) continue;
+        o.found.assign(o.multi.size(), 0);
+        requests.emplace_back();
+        MPI_Irecv(o.found.data(), static_cast<int>(o.found.size()), MPI_BYTE, o.rank, kTagFound, comm,
+                  &requests.back());
+    }
+    for (int n = 0; n < nInbound; ++n) {
+        Inbound& in = inbound[n];
+        if (in.layout.nMulti == 0) continue;
+        requests.emplace_back();
+        MPI_Isend(in.found.data(), static_cast<int>(in.found.size()), MPI_BYTE, in.rank, kTagFound, comm,
+                  &requests.back());
+        stats.bytesSent += static_cast<std::int64_t>(in.found.size());
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+}
+
+// ---- 5. owner of each multi particle: the lowest rank that found it ----
+void ParticleExchange::Impl::chooseOwners(const std::vector<ParticleState>& dem, ForwardProblems& pr) {
+    for (int b = 0; b < nOutboxes; ++b) outboxes[b].keep.assign(outboxes[b].multi.size(), 0);
+    selfKeep.assign(selfDem.size(), 0);
+    for (const Multi& mp : multis) {
+        int owner = -1;
+        for (int c = mp.first; c < mp.first + mp.count && owner < 0; ++c) {
+            const Candidate& cand = multiCandidates[c];
+            const bool found = cand.outbox < 0 ? selfCell[cand.index] >= 0 : outboxes[cand.outbox].found[cand.index];
+            if (found) owner = cand.rank;  // candidates are in ascending rank order
+        }
+        if (owner < 0) {
+            const ParticleState& p = dem[mp.dem];
+            pr.outsideMesh("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (none of the ",
+                           mp.count, " ranks whose CFD box contains it has a cell containing it)");
+            continue;
+        }
+        for (int c = mp.first; c < mp.first + mp.count; ++c) {
+            const Candidate& cand = multiCandidates[c];
+            if (cand.rank != owner) continue;
+            (cand.outbox < 0 ? selfKeep[cand.index] : outboxes[cand.outbox].keep[cand.index]) = 1;
+        }
+    }
+}
+
+// ---- 6. keep/drop to every rank that found a multi record ----
+void ParticleExchange::Impl::sendDecisions(ExchangeStats& stats) {
+    // Pattern known on both sides: a finder of >= 1 multi record expects one
+    // decision, and its DEM owner knows it from the found flags.
+    requests.clear();
+    for (int n = 0; n < nInbound; ++n) {
+        Inbound& in = inbound[n];
+        in.keep.assign(in.layout.nMulti, 0);
+        if (in.foundMulti == 0) continue;
+        requests.emplace_back();
+        MPI_Irecv(in.keep.data(), static_cast<int>(in.keep.size()), MPI_BYTE, in.rank, kTagKeep, comm,
+                  &requests.back());
+    }
+    for (int b = 0; b < nOutboxes; ++b) {
+        Outbox& o = outboxes[b];
+        if (!o.anyFound()) continue;
+        requests.emplace_back();
+        MPI_Isend(o.keep.data(), static_cast<int>(o.keep.size()), MPI_BYTE, o.rank, kTagKeep, comm,
+                  &requests.back());
+        stats.bytesSent += static_cast<std::int64_t>(o.keep.size());
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+}
+
+// ---- 7. routes (DEM side) and the owned list (CFD side) ----
+void ParticleExchange::Impl::buildRoutes(const std::vector<ParticleState>& dem, OwnedParticles& owned) {
+    sendRoutes.clear();
+    routeDem.clear();
+    for (int b = 0; b < nOutboxes; ++b) {
+        const Outbox& o = outboxes[b];
+        const std::size_t first = routeDem.size();
+        std::size_t mi = 0;
+        for (std::size_t k = 0; k < o.dem.size(); ++k) {
+            const bool isMulti = mi < o.multi.size() && o.multi[mi] == static_cast<std::int64_t>(k);
+            if (!isMulti || o.keep[mi]) routeDem.push_back(o.dem[k]);
+            mi += isMulti;
+        }
+        if (routeDem.size() > first) sendRoutes.push_back({o.rank, first, routeDem.size() - first});
+    }
+    {
+        const std::size_t first = routeDem.size();
+        for (std::size_t j = 0; j < selfDem.size(); ++j)
+            if (selfOwns(j)) routeDem.push_back(selfDem[j]);
+        if (routeDem.size() > first) sendRoutes.push_back({rank, first, routeDem.size() - first});
+    }
+
+    // The owned list, by source rank (this rank in its place): own particles
+    // by index, inbound records decoded.
+    owned.clear();
+    owned.local_ = &dem;
+    recvRoutes.clear();
+    auto takeSelf = [&] {
+        const std::size_t first = owned.size();
+        for (std::size_t j = 0; j < selfDem.size(); ++j)
+            if (selfOwns(j)) owned.addLocal(selfDem[j], selfCell[j]);
+        if (owned.size() > first) recvRoutes.push_back({rank, first, owned.size() - first});
+    };
+    bool selfTaken = false;
+    for (int n = 0; n < nInbound; ++n) {
+        const Inbound& in = inbound[n];
+        if (!selfTaken && rank < in.rank) {
+            takeSelf();
+            selfTaken = true;
+        }
+        const std::size_t first = owned.size();
+        std::size_t mi = 0;
+        for (std::size_t k = 0; k < in.layout.nRecords; ++k) {
+            const int cell = cells[in.firstCell + k];
+            const bool isMulti =
+                mi < in.layout.nMulti && record::multiAt(in.layout, mi) == static_cast<std::int64_t>(k);
+            const bool keep = isMulti ? (cell >= 0 && in.keep[mi]) : cell >= 0;
+            mi += isMulti;
+            if (keep) owned.addRemote(record::read(in.records, k), cell);
+        }
+        if (owned.size() > first) recvRoutes.push_back({in.rank, first, owned.size() - first});
+    }
+    if (!selfTaken) takeSelf();
+    nDem = dem.size();
+    nOwned = owned.size();
+}
+
+// ---------------------------------------------------------------------------
+void OwnedParticles::clear() {
+    local_ = nullptr;
+    index_.clear();
+    cell_.clear();
+    remote_.clear();
+}
+
+void OwnedParticles::addLocal(int demIndex, int cell) {
+    index_.push_back(demIndex);
+    cell_.push_back(cell);
+}
+
+void OwnedParticles::addRemote(const ParticleState& p, int cell) {
+    if (remote_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+        fail("OwnedParticles: more than 2^31 particles on one rank");
+    index_.push_back(-1 - static_cast<std::int32_t>(remote_.size()));
+    cell_.push_back(cell);
+    remote_.push_back(p);
+}
+
+void OwnedParticles::add(const ParticleState& p, int cell) { addRemote(p, cell); }
+
+std::size_t OwnedParticles::bufferBytes() const {
+    return capacityBytes(index_) + capacityBytes(cell_) + capacityBytes(remote_);
+}
+
+// ---------------------------------------------------------------------------
 ParticleExchange::ParticleExchange(MPI_Comm comm, const CellLocator& mesh, double margin)
     : comm_(comm), mesh_(mesh), margin_(margin), impl_(std::make_unique<Impl>()) {
     MPI_Comm_rank(comm, &rank_);
@@ -145,6 +465,7 @@ ParticleExchange::ParticleExchange(MPI_Comm comm, const CellLocator& mesh, doubl
     }
     raiseIfAny(comm, bad);
     MPI_Comm_dup(comm, &impl_->comm);
+    impl_->rank = rank_;
     impl_->outboxOfRank.assign(size_, -1);
     updateBounds();
 }
@@ -171,266 +492,23 @@ void ParticleExchange::updateBounds() {
     impl_->boxes.build(inflated);
 }
 
-void ParticleExchange::forward(const std::vector<ParticleState>& dem, std::vector<OwnedParticle>& owned,
+void ParticleExchange::forward(const std::vector<ParticleState>& dem, OwnedParticles& owned,
                                Outside outsidePolicy) {
     Impl& m = *impl_;
     m.routesValid = false;
     stats_ = ExchangeStats{};
-    owned.clear();
-    FirstError error;
-    // A particle in no rank's cells: an error, or (Outside::skip) counted.
-    auto outside = [&](const auto&... parts) {
-        if (outsidePolicy == Outside::skip)
-            ++stats_.outside;
-        else
-            error.note(parts...);
-    };
-
-    // ---- 1. candidates, records packed per destination ----
-    for (int b = 0; b < m.nOutboxes; ++b) m.outboxOfRank[m.outboxes[b].rank] = -1;
-    m.nOutboxes = 0;
-    m.selfDem.clear();
-    // m.selfCell keeps the last step's cells: they are the first hints in 3.
-    m.selfMulti.clear();
-    m.multis.clear();
-    m.multiCandidates.clear();
-    for (int i = 0; i < static_cast<int>(dem.size()); ++i) {
-        const ParticleState& p = dem[i];
-        if (!p.x.allFinite()) {
-            error.note("particle ", p.id, " has a non-finite position ", show(p.x),
-                       "; expected finite coordinates [m]");
-            continue;
-        }
-        if (!p.v.allFinite()) {
-            error.note("particle ", p.id, " at ", show(p.x), " has a non-finite velocity ", show(p.v),
-                       "; expected finite components [m/s]");
-            continue;
-        }
-        if (!(p.radius > 0) || !std::isfinite(p.radius)) {
-            error.note("particle ", p.id, " at ", show(p.x), " has radius ", p.radius,
-                       " m; expected a finite radius > 0");
-            continue;
-        }
-        m.boxes.find(p.x, m.candidates);
-        if (m.candidates.empty()) {
-            outside("particle ", p.id, " at ", show(p.x),
-                    " is outside the CFD mesh (in no rank's CFD subdomain box)");
-            continue;
-        }
-        const bool multi = m.candidates.size() > 1;
-        if (multi)
-            m.multis.push_back(
-                {i, static_cast<int>(m.multiCandidates.size()), static_cast<int>(m.candidates.size())});
-        for (int r : m.candidates) {
-            ++stats_.particlesSent;
-            if (r == rank_) {
-                if (multi) m.multiCandidates.push_back({r, -1, static_cast<int>(m.selfDem.size())});
-                m.selfDem.push_back(i);
-                m.selfMulti.push_back(multi);
-                continue;
-            }
-            const int b = m.outboxFor(r);
-            Impl::Outbox& o = m.outboxes[b];
-            if (multi) {
-                m.multiCandidates.push_back({r, b, static_cast<int>(o.multi.size())});
-                o.multi.push_back(static_cast<std::int64_t>(o.dem.size()));
-            }
-            o.dem.push_back(i);
-            record::append(o.message, p);
-        }
-    }
-
-    // ---- 2. records to the remote candidates (NBX) ----
-    std::vector<SparseSend> sends;
-    sends.reserve(m.nOutboxes);
-    for (int b = 0; b < m.nOutboxes; ++b) {
-        Impl::Outbox& o = m.outboxes[b];
-        record::appendTrailer(o.message, o.multi);
-        sends.push_back({o.rank, o.message.data(), o.message.size()});
-        stats_.bytesSent += static_cast<std::int64_t>(o.message.size());
-    }
-    stats_.partners = m.nOutboxes;
-    sparseExchange(m.comm, kTagRecords[m.forwardCalls++ % 2], sends, m.inbox);
-
-    // ---- 3. locate: own records, then inbound ones ----
-    // Two hints before the locator's global search (which costs tens of
-    // microseconds per particle on thin or skewed meshes):
-    // - own particles: the cell found at the same position of the list in the
-    //   last forward(). The DEM keeps its local order between re-sorts, and a
-    //   particle moves less than a cell per coupling step, so this is mostly
-    //   the particle's own last cell (no per-particle storage beyond the
-    //   selfCell list this class keeps anyway);
-    // - then the previous record's cell: DEM codes sort their particles in
-    //   space, so neighbours in the list are mostly in the same or an
-    //   adjacent cell (this also covers the steps right after a re-sort).
-    // Hints only choose where to look first; a wrong one never gives a wrong cell.
-    int hint = -1;
-    const std::size_t previous = m.selfCell.size();
-    m.selfCell.resize(m.selfDem.size());
-    for (std::size_t j = 0; j < m.selfDem.size(); ++j) {
-        const ParticleState& p = dem[m.selfDem[j]];
-        const int near = j < previous ? mesh_.findCellNear(p.x, m.selfCell[j]) : -1;
-        m.selfCell[j] = near >= 0 ? near : mesh_.findCell(p.x, hint);
-        if (m.selfCell[j] >= 0) hint = m.selfCell[j];
-        if (m.selfCell[j] < 0 && !m.selfMulti[j])
-            outside("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
-                    "'s CFD box but in none of its cells)");
-    }
-    m.nInbound = static_cast<int>(m.inbox.messages.size());
-    if (static_cast<int>(m.inbound.size()) < m.nInbound) m.inbound.resize(m.nInbound);
-    m.cells.clear();
-    for (int n = 0; n < m.nInbound; ++n) {
-        const SparseMessage& msg = m.inbox.messages[n];
-        Impl::Inbound& in = m.inbound[n];
-        in.rank = msg.rank;
-        in.records = m.inbox.bytes.data() + msg.offset;
-        in.firstCell = m.cells.size();
-        in.foundMulti = 0;
-        if (!record::parse(in.records, msg.bytes, in.layout)) {
-            // Cannot happen with messages written by this class; reported, not trusted.
-            error.note("ParticleExchange: malformed record message of ", msg.bytes, " bytes from rank ",
-                       msg.rank);
-            in.layout = record::Layout{};
-        }
-        in.found.assign(in.layout.nMulti, 0);
-        std::size_t mi = 0;
-        for (std::size_t k = 0; k < in.layout.nRecords; ++k) {
-            const ParticleState p = record::read(in.records, k);
-            const int cell = mesh_.findCell(p.x, hint);
-            if (cell >= 0) hint = cell;
-            m.cells.push_back(cell);
-            if (mi < in.layout.nMulti && record::multiAt(in.layout, mi) == static_cast<std::int64_t>(k)) {
-                in.found[mi++] = cell >= 0;
-                in.foundMulti += cell >= 0;
-            } else if (cell < 0) {
-                outside("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank_,
-                        "'s CFD box but in none of its cells)");
-            }
-        }
-    }
-
-    // ---- 4. found flags of the multi records back to their DEM owners ----
-    // Pattern known on both sides: an outbox with multi records expects one
-    // reply; an inbound message with multi records sends one.
-    m.requests.clear();
-    for (int b = 0; b < m.nOutboxes; ++b) {
-        Impl::Outbox& o = m.outboxes[b];
-        if (o.multi.empty()) continue;
-        o.found.assign(o.multi.size(), 0);
-        m.requests.emplace_back();
-        MPI_Irecv(o.found.data(), static_cast<int>(o.found.size()), MPI_BYTE, o.rank, kTagFound, m.comm,
-                  &m.requests.back());
-    }
-    for (int n = 0; n < m.nInbound; ++n) {
-        Impl::Inbound& in = m.inbound[n];
-        if (in.layout.nMulti == 0) continue;
-        m.requests.emplace_back();
-        MPI_Isend(in.found.data(), static_cast<int>(in.found.size()), MPI_BYTE, in.rank, kTagFound, m.comm,
-                  &m.requests.back());
-        stats_.bytesSent += static_cast<std::int64_t>(in.found.size());
-    }
-    MPI_Waitall(static_cast<int>(m.requests.size()), m.requests.data(), MPI_STATUSES_IGNORE);
-
-    // ---- 5. owner of each multi particle: the lowest rank that found it ----
-    for (int b = 0; b < m.nOutboxes; ++b) m.outboxes[b].keep.assign(m.outboxes[b].multi.size(), 0);
-    m.selfKeep.assign(m.selfDem.size(), 0);
-    for (const Impl::Multi& mp : m.multis) {
-        int owner = -1;
-        for (int c = mp.first; c < mp.first + mp.count && owner < 0; ++c) {
-            const Impl::Candidate& cand = m.multiCandidates[c];
-            const bool found =
-                cand.outbox < 0 ? m.selfCell[cand.index] >= 0 : m.outboxes[cand.outbox].found[cand.index];
-            if (found) owner = cand.rank;  // candidates are in ascending rank order
-        }
-        if (owner < 0) {
-            const ParticleState& p = dem[mp.dem];
-            outside("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (none of the ",
-                    mp.count, " ranks whose CFD box contains it has a cell containing it)");
-            continue;
-        }
-        for (int c = mp.first; c < mp.first + mp.count; ++c) {
-            const Impl::Candidate& cand = m.multiCandidates[c];
-            if (cand.rank != owner) continue;
-            (cand.outbox < 0 ? m.selfKeep[cand.index] : m.outboxes[cand.outbox].keep[cand.index]) = 1;
-        }
-    }
-
-    // ---- 6. keep/drop to every rank that found a multi record ----
-    // Pattern known on both sides: a finder of >= 1 multi record expects one
-    // decision, and its DEM owner knows it from the found flags.
-    m.requests.clear();
-    for (int n = 0; n < m.nInbound; ++n) {
-        Impl::Inbound& in = m.inbound[n];
-        in.keep.assign(in.layout.nMulti, 0);
-        if (in.foundMulti == 0) continue;
-        m.requests.emplace_back();
-        MPI_Irecv(in.keep.data(), static_cast<int>(in.keep.size()), MPI_BYTE, in.rank, kTagKeep, m.comm,
-                  &m.requests.back());
-    }
-    for (int b = 0; b < m.nOutboxes; ++b) {
-        Impl::Outbox& o = m.outboxes[b];
-        if (!o.anyFound()) continue;
-        m.requests.emplace_back();
-        MPI_Isend(o.keep.data(), static_cast<int>(o.keep.size()), MPI_BYTE, o.rank, kTagKeep, m.comm,
-                  &m.requests.back());
-        stats_.bytesSent += static_cast<std::int64_t>(o.keep.size());
-    }
-    MPI_Waitall(static_cast<int>(m.requests.size()), m.requests.data(), MPI_STATUSES_IGNORE);
-
-    // ---- 7. routes (DEM side) and the owned list (CFD side) ----
-    m.sendRoutes.clear();
-    m.routeDem.clear();
-    for (int b = 0; b < m.nOutboxes; ++b) {
-        const Impl::Outbox& o = m.outboxes[b];
-        const std::size_t first = m.routeDem.size();
-        std::size_t mi = 0;
-        for (std::size_t k = 0; k < o.dem.size(); ++k) {
-            const bool isMulti = mi < o.multi.size() && o.multi[mi] == static_cast<std::int64_t>(k);
-            if (!isMulti || o.keep[mi]) m.routeDem.push_back(o.dem[k]);
-            mi += isMulti;
-        }
-        if (m.routeDem.size() > first) m.sendRoutes.push_back({o.rank, first, m.routeDem.size() - first});
-    }
-    {
-        const std::size_t first = m.routeDem.size();
-        for (std::size_t j = 0; j < m.selfDem.size(); ++j)
-            if (m.selfMulti[j] ? m.selfKeep[j] : m.selfCell[j] >= 0) m.routeDem.push_back(m.selfDem[j]);
-        if (m.routeDem.size() > first) m.sendRoutes.push_back({rank_, first, m.routeDem.size() - first});
-    }
-
-    m.recvRoutes.clear();
-    auto takeSelf = [&] {
-        const std::size_t first = owned.size();
-        for (std::size_t j = 0; j < m.selfDem.size(); ++j)
-            if (m.selfMulti[j] ? m.selfKeep[j] : m.selfCell[j] >= 0)
-                owned.push_back({dem[m.selfDem[j]], m.selfCell[j]});
-        if (owned.size() > first) m.recvRoutes.push_back({rank_, first, owned.size() - first});
-    };
-    bool selfTaken = false;
-    for (int n = 0; n < m.nInbound; ++n) {
-        const Impl::Inbound& in = m.inbound[n];
-        if (!selfTaken && rank_ < in.rank) {
-            takeSelf();
-            selfTaken = true;
-        }
-        const std::size_t first = owned.size();
-        std::size_t mi = 0;
-        for (std::size_t k = 0; k < in.layout.nRecords; ++k) {
-            const int cell = m.cells[in.firstCell + k];
-            const bool isMulti =
-                mi < in.layout.nMulti && record::multiAt(in.layout, mi) == static_cast<std::int64_t>(k);
-            const bool keep = isMulti ? (cell >= 0 && in.keep[mi]) : cell >= 0;
-            mi += isMulti;
-            if (keep) owned.push_back({record::read(in.records, k), cell});
-        }
-        if (owned.size() > first) m.recvRoutes.push_back({in.rank, first, owned.size() - first});
-    }
-    if (!selfTaken) takeSelf();
-
-    m.nDem = dem.size();
-    m.nOwned = owned.size();
+    ForwardProblems problems;
+    problems.outsidePolicy = outsidePolicy;
+    m.findCandidates(dem, stats_, problems);
+    m.sendRecords(stats_);
+    m.locate(mesh_, dem, problems);
+    m.replyFound(stats_);
+    m.chooseOwners(dem, problems);
+    m.sendDecisions(stats_);
+    m.buildRoutes(dem, owned);
+    stats_.outside = problems.outside;
     // ---- 8. any bad particle anywhere: every rank throws the same error ----
-    raiseIfAny(m.comm, error.message);
+    raiseIfAny(m.comm, problems.error.message);
     m.routesValid = true;
 }
 
@@ -502,13 +580,6 @@ void ParticleExchange::backward(const std::vector<double>& ownedValues, int widt
         at += r.count * w;
     }
 }
-
-namespace {
-template <class T>
-std::size_t capacityBytes(const std::vector<T>& v) {
-    return v.capacity() * sizeof(T);
-}
-}  // namespace
 
 std::size_t ParticleExchange::bufferBytes() const {
     const Impl& m = *impl_;

@@ -21,8 +21,9 @@
 //      the DEM owner picks the LOWEST rank that found it and tells every
 //      finder keep/drop. Ranks with no multi records skip both rounds.
 //   4. One raiseIfAny: any bad particle throws on all ranks together.
-// Self-sends are plain copies. backward() sends the values back along the
-// routes of the last forward() with plain point-to-point messages.
+// The rank's own particles are never copied: `owned` refers to them by
+// index. backward() sends the values back along the routes of the last
+// forward() with plain point-to-point messages.
 //
 // Errors (non-finite position or velocity, radius <= 0, a particle in no
 // rank's cells) are raised on ALL ranks together (see core/Collective.hpp),
@@ -42,10 +43,61 @@
 
 namespace granair {
 
-// A particle as seen on the rank owning its cell.
+// One particle as seen on the rank owning its cell (a copy).
 struct OwnedParticle {
     ParticleState state;
     int cell = -1;  // local cell index on this rank
+};
+
+// The particles whose cells this rank owns, as forward() leaves them. This
+// rank's own DEM particles are referred to by their index in the `dem` list
+// given to forward(), never copied: that list must stay alive and unchanged
+// while the owned list is used (until the next forward()). Records from
+// other ranks are decoded once into a list of their own. add() appends a
+// copy (for callers that build a list directly, e.g. tests).
+class OwnedParticles {
+public:
+    std::size_t size() const { return cell_.size(); }
+    bool empty() const { return cell_.empty(); }
+    const ParticleState& state(std::size_t k) const {
+        const std::int32_t i = index_[k];
+        return i >= 0 ? (*local_)[static_cast<std::size_t>(i)] : remote_[static_cast<std::size_t>(-1 - i)];
+    }
+    int cell(std::size_t k) const { return cell_[k]; }
+    OwnedParticle operator[](std::size_t k) const { return {state(k), cell(k)}; }
+
+    // Iteration yields copies (OwnedParticle values), for tests and checks;
+    // hot loops use state(k) and cell(k).
+    class const_iterator {
+    public:
+        const_iterator(const OwnedParticles* list, std::size_t k) : list_(list), k_(k) {}
+        OwnedParticle operator*() const { return (*list_)[k_]; }
+        const_iterator& operator++() {
+            ++k_;
+            return *this;
+        }
+        bool operator!=(const const_iterator& o) const { return k_ != o.k_; }
+
+    private:
+        const OwnedParticles* list_;
+        std::size_t k_;
+    };
+    const_iterator begin() const { return {this, 0}; }
+    const_iterator end() const { return {this, size()}; }
+
+    void clear();
+    void add(const ParticleState& p, int cell);
+    std::size_t bufferBytes() const;
+
+private:
+    friend class ParticleExchange;
+    void addLocal(int demIndex, int cell);
+    void addRemote(const ParticleState& p, int cell);
+
+    const std::vector<ParticleState>* local_ = nullptr;  // the dem list of the last forward()
+    std::vector<std::int32_t> index_;  // >= 0: into *local_; < 0: -1 - index into remote_
+    std::vector<int> cell_;
+    std::vector<ParticleState> remote_;
 };
 
 // Counts of this rank for the last forward() and the backward() calls after
@@ -82,7 +134,7 @@ public:
     // (Outside::error) lies in no rank's cells. With Outside::skip such a
     // particle is owned by no rank, counted in stats().outside, and gets NaN
     // values from backward() (a DEM-only run maps only what is in the mesh).
-    void forward(const std::vector<ParticleState>& dem, std::vector<OwnedParticle>& owned,
+    void forward(const std::vector<ParticleState>& dem, OwnedParticles& owned,
                  Outside outside = Outside::error);
 
     // Send `width` doubles per owned particle (ordered as `owned` of the last
@@ -100,7 +152,8 @@ public:
     MPI_Comm comm() const { return comm_; }
 
 private:
-    // Buffers and routes of the last forward(); defined in ParticleExchange.cpp.
+    // Buffers and routes of the last forward(), and the phases of forward()
+    // as its member functions; defined in ParticleExchange.cpp.
     struct Impl;
     MPI_Comm comm_;
     const CellLocator& mesh_;

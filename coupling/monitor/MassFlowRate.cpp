@@ -21,3 +21,15 @@ double MassFlowRate::add(double t, double m) {
 }
 
 }  // namespace granair
+
+namespace granair {
+
+void MassFlowRate::restore(History history) {
+    for (std::size_t k = 1; k < history.size(); ++k)
+        if (!(history[k].first > history[k - 1].first))
+            fail<InputError>("mass flow window: restart samples must have increasing times (", history[k].first,
+                             " after ", history[k - 1].first, ")");
+    history_ = std::move(history);
+}
+
+}  // namespace granair

@@ -17,10 +17,15 @@ public:
     // and return the windowed rate [kg/s].
     double add(double t, double cumulativeMass);
     double window() const { return window_; }
+    // The samples (t, M) the window still needs, for a restart point.
+    using History = std::deque<std::pair<double, double>>;
+    const History& history() const { return history_; }
+    // Continue from a restart point's samples (times increasing).
+    void restore(History history);
 
 private:
     double window_;
-    std::deque<std::pair<double, double>> history_;
+    History history_;
 };
 
 }  // namespace granair

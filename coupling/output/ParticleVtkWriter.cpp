@@ -247,4 +247,12 @@ std::string ParticleVtkWriter::writeCollection() const {
     return replaceFile(collectionPath(), xml.str());
 }
 
+void ParticleVtkWriter::resume(const std::vector<double>& times) {
+    for (std::size_t k = 1; k < times.size(); ++k)
+        if (!(times[k] > times[k - 1]))
+            fail<InputError>("particle output '", directory_, "': restart output times must increase (",
+                             times[k], " after ", times[k - 1], ")");
+    times_ = times;
+}
+
 }  // namespace granair

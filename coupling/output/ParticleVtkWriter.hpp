@@ -55,6 +55,10 @@ public:
                std::size_t nForces);
 
     int outputs() const { return static_cast<int>(times_.size()); }
+    const std::vector<double>& times() const { return times_; }
+    // A restart: the outputs already on disk (their times, increasing), so
+    // numbering and the collection continue after them.
+    void resume(const std::vector<double>& times);
     const std::string& directory() const { return directory_; }
     std::string collectionPath() const { return directory_ + "/particles.pvd"; }
 

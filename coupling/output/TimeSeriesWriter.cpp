@@ -12,11 +12,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
 #include "output/FormatExact.hpp"
+#include "output/Hdf5Util.hpp"
 
 namespace granair {
 
@@ -24,40 +27,6 @@ namespace {
 
 // Rows per HDF5 chunk: a long run appends many rows, one at a time.
 constexpr hsize_t chunkRows = 256;
-
-// HDF5 prints its error stack to stderr by default; we turn failures into
-// exceptions with our own message instead, so silence it while we work.
-class QuietHdf5 {
-public:
-    QuietHdf5() {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    }
-    ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-    QuietHdf5(const QuietHdf5&) = delete;
-    QuietHdf5& operator=(const QuietHdf5&) = delete;
-
-private:
-    H5E_auto2_t func_ = nullptr;
-    void* data_ = nullptr;
-};
-
-// Fixed-length, null-terminated string attribute on an HDF5 object.
-bool writeStringAttribute(hid_t object, const char* name, const std::string& value) {
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    const hid_t space = H5Screate(H5S_SCALAR);
-    bool ok = type >= 0 && space >= 0 && H5Tset_size(type, value.size() + 1) >= 0 &&
-              H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0;
-    if (ok) {
-        const hid_t attr = H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-        ok = attr >= 0 && H5Awrite(attr, type, value.c_str()) >= 0;
-        if (attr >= 0) H5Aclose(attr);
-    }
-    if (space >= 0) H5Sclose(space);
-    if (type >= 0) H5Tclose(type);
-    return ok;
-}
-
 
 void checkColumns(const std::string& stem, const std::vector<Column>& columns) {
     if (columns.empty()) fail<InputError>("time series '", stem, "': no columns given");
@@ -83,6 +52,7 @@ struct TimeSeriesWriter::Impl {
     hid_t file = -1;
     std::vector<hid_t> datasets;
     hsize_t rows = 0;
+    long count = 0;  // rows on every rank (kept + appended)
 
     ~Impl() { release(); }
 
@@ -133,6 +103,73 @@ struct TimeSeriesWriter::Impl {
         return "";
     }
 
+    std::string header() const {
+        std::string h;
+        for (size_t i = 0; i < columns.size(); ++i) h += (i ? "," : "") + columns[i].name;
+        return h;
+    }
+
+    // Continue an existing series after its first keepRows rows; returns ""
+    // or what is wrong with the files (nothing is left open then).
+    std::string resume(long keepRows) {
+        std::ifstream in(csvPath());
+        if (!in) return "cannot continue time series '" + csvPath() + "': the file does not exist (a restart " +
+                        "continues the series of the run it restarts from)";
+        std::string line, kept;
+        std::getline(in, line);
+        if (line != header())
+            return "cannot continue time series '" + csvPath() + "': its columns '" + line +
+                   "' differ from this run's '" + header() + "' (were the air, discharge or monitors changed?)";
+        kept = line + "\n";
+        long n = 0;
+        while (n < keepRows && std::getline(in, line) && !line.empty()) {
+            kept += line + "\n";
+            ++n;
+        }
+        in.close();
+        if (n < keepRows)
+            return "cannot continue time series '" + csvPath() + "': it has " + std::to_string(n) +
+                   " rows, the restart point needs the first " + std::to_string(keepRows);
+        // Rewrite it with the kept rows (a run that went on past the restart
+        // point left rows that are about to be computed again).
+        const std::string tmp = csvPath() + ".restart";
+        {
+            std::ofstream out(tmp, std::ios::trunc);
+            out << kept;
+            if (!out.flush()) return "cannot write '" + tmp + "'";
+        }
+        if (std::rename(tmp.c_str(), csvPath().c_str()) != 0)
+            return "cannot replace '" + csvPath() + "': " + std::strerror(errno);
+        csv = std::fopen(csvPath().c_str(), "a");
+        if (!csv) return "cannot append to time-series file '" + csvPath() + "': " + std::strerror(errno);
+
+        QuietHdf5 quiet;
+        file = H5Fopen(h5Path().c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+        if (file < 0) {
+            release();
+            return "cannot continue time series '" + h5Path() + "': it cannot be opened (missing?)";
+        }
+        const hsize_t keep = static_cast<hsize_t>(keepRows);
+        for (const Column& c : columns) {
+            const hid_t ds = H5Dopen2(file, c.name.c_str(), H5P_DEFAULT);
+            hsize_t size = 0;
+            const hid_t space = ds >= 0 ? H5Dget_space(ds) : -1;
+            const bool ok = space >= 0 && H5Sget_simple_extent_ndims(space) == 1 &&
+                            H5Sget_simple_extent_dims(space, &size, nullptr) == 1;
+            if (space >= 0) H5Sclose(space);
+            if (ds >= 0) datasets.push_back(ds);
+            if (!ok || size < keep || H5Dset_extent(ds, &keep) < 0) {
+                release();
+                return "cannot continue time series '" + h5Path() + "': column '" + c.name +
+                       (ok ? "' has " + std::to_string(size) + " rows, the restart point needs " +
+                                 std::to_string(keepRows)
+                           : "' is missing");
+            }
+        }
+        rows = keep;
+        return "";
+    }
+
     void appendCsv(const std::vector<double>& row) {
         for (size_t i = 0; i < row.size(); ++i) std::fprintf(csv, "%s%s", i ? "," : "", formatExact(row[i]).c_str());
         std::fputc('\n', csv);
@@ -173,7 +210,8 @@ struct TimeSeriesWriter::Impl {
     }
 };
 
-TimeSeriesWriter::TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::vector<Column> columns)
+TimeSeriesWriter::TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::vector<Column> columns,
+                                   long keepRows)
     : impl_(std::make_unique<Impl>()) {
     checkColumns(stem, columns);
     impl_->stem = stem;
@@ -181,8 +219,13 @@ TimeSeriesWriter::TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     impl_->writer = rank == 0;
-    raiseIfAny(comm, impl_->writer ? impl_->open() : std::string());
+    std::string problem;
+    if (impl_->writer) problem = keepRows >= 0 ? impl_->resume(keepRows) : impl_->open();
+    raiseIfAny(comm, problem);
+    impl_->count = keepRows >= 0 ? keepRows : 0;
 }
+
+long TimeSeriesWriter::rows() const { return impl_->count; }
 
 TimeSeriesWriter::~TimeSeriesWriter() {
     try {
@@ -198,6 +241,7 @@ void TimeSeriesWriter::append(const std::vector<double>& row) {
     if (row.size() != m.columns.size())
         fail<Error>("time series '", m.stem, "': row has ", row.size(), " values, expected ", m.columns.size(),
                     " (one per column)");
+    ++m.count;
     if (!m.writer) return;
     m.appendCsv(row);
     m.appendHdf5(row);

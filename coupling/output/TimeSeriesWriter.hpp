@@ -25,7 +25,12 @@ public:
     // stem: path without extension; writes stem.csv and stem.h5 (replacing
     // them). Collective over comm: if rank 0 cannot create the files, every
     // rank throws InputError naming the path.
-    TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::vector<Column> columns);
+    // keepRows >= 0 continues an existing series instead (a restart): both
+    // files must exist with these columns and at least keepRows rows; the
+    // rows after the first keepRows are dropped (a run that went on past the
+    // restart point) and new rows follow, so no row is lost or repeated.
+    // InputError on every rank, naming the file, if that is not so.
+    TimeSeriesWriter(MPI_Comm comm, const std::string& stem, std::vector<Column> columns, long keepRows = -1);
     ~TimeSeriesWriter();
     TimeSeriesWriter(const TimeSeriesWriter&) = delete;
     TimeSeriesWriter& operator=(const TimeSeriesWriter&) = delete;
@@ -34,6 +39,8 @@ public:
     // every rank may call it; non-writing ranks ignore the values.
     void append(const std::vector<double>& row);
     void close();
+    // Rows in the series so far (kept + appended), on every rank.
+    long rows() const;
 
 private:
     struct Impl;

@@ -11,7 +11,7 @@ namespace granair {
 GranularTemperatureModel::GranularTemperatureModel(const LatzSchmidt& closure, const Parameters& p)
     : closure_(closure), p_(p) {
     auto check = [](bool good, const char* key, double v, const char* expected) {
-        if (!good) fail<InputError>("rheology latzSchmidt: ", key, " = ", v, ", expected ", expected);
+        if (!good) failParameter(key, "rheology latzSchmidt: ", key, " = ", v, ", expected ", expected);
     };
     check(p_.rhoP > 0 && std::isfinite(p_.rhoP), "rhoP", p_.rhoP, "a finite particle density > 0 [kg/m3]");
     check(p_.etaMax > 0 && std::isfinite(p_.etaMax), "etaMax", p_.etaMax, "a finite viscosity cap > 0 [Pa s]");
@@ -19,16 +19,17 @@ GranularTemperatureModel::GranularTemperatureModel(const LatzSchmidt& closure, c
 }
 
 GranularTemperatureModel GranularTemperatureModel::fromDictionary(const Dictionary& dict) {
-    const auto closure = LatzSchmidt::fromDictionary(dict);  // checks its own keys
+    // The closure is the registry's latzSchmidt (its keys checked there), not a second construction path.
+    const auto closure = rheologies().create(dict);
+    const auto* ls = dynamic_cast<const LatzSchmidt*>(closure.get());
+    if (!ls)
+        fail<InputError>(dict.where("type"), ": the granular-temperature equation needs rheology '",
+                         LatzSchmidt::typeName, "', got '", closure->name(), "'");
     Parameters p;
     p.rhoP = dict.getDouble("rhoP");
     p.etaMax = dict.getDouble("etaMax", p.etaMax);
     p.TMin = dict.getDouble("TMin", p.TMin);
-    try {
-        return GranularTemperatureModel(static_cast<const LatzSchmidt&>(*closure), p);
-    } catch (const InputError& e) {
-        fail<InputError>(dict.where("type"), ": ", e.what());
-    }
+    return constructNamingKey(dict, [&] { return GranularTemperatureModel(*ls, p); });
 }
 
 GranularTemperatureModel::Cell GranularTemperatureModel::evaluate(double p, double T, double gammaDot) const {

@@ -53,9 +53,10 @@ public:
         bool capped;         // the cap was active
     };
 
-    // Throws InputError naming a parameter out of range.
+    // Throws ParameterError (an InputError, core/Registry.hpp) naming a parameter out of range.
     GranularTemperatureModel(const LatzSchmidt& closure, const Parameters& p);
-    // The LatzSchmidt keys plus rhoP, etaMax, TMin; errors name the file and key.
+    // The closure from the rheology registry (type latzSchmidt and its keys),
+    // plus rhoP, etaMax, TMin; errors name the file and key.
     static GranularTemperatureModel fromDictionary(const Dictionary& dict);
 
     // Throws InputError (naming the value) for non-finite p, T <= 0, gammaDot < 0.

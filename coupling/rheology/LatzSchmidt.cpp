@@ -10,7 +10,7 @@ namespace granair {
 
 LatzSchmidt::LatzSchmidt(const Parameters& p) : p_(p) {
     auto check = [](bool good, const char* key, double v, const char* expected) {
-        if (!good) fail<InputError>("rheology latzSchmidt: ", key, " = ", v, ", expected ", expected);
+        if (!good) failParameter(key, "rheology latzSchmidt: ", key, " = ", v, ", expected ", expected);
     };
     check(p_.c0 > 0 && p_.c0 < 1, "c0", p_.c0, "0 < c0 < 1");
     check(p_.cMax > p_.c0 && p_.cMax < 1, "cMax", p_.cMax, "c0 < cMax < 1");
@@ -28,11 +28,7 @@ std::unique_ptr<Rheology> LatzSchmidt::fromDictionary(const Dictionary& dict) {
     p.eta0 = dict.getDouble("eta0");
     p.lambda0 = dict.getDouble("lambda0");
     p.eps0 = dict.getDouble("eps0");
-    try {
-        return std::make_unique<LatzSchmidt>(p);
-    } catch (const InputError& e) {
-        fail<InputError>(dict.where("type"), ": ", e.what());
-    }
+    return std::make_unique<LatzSchmidt>(p);  // the registry names the file of a bad value
 }
 
 std::vector<RheologyQuantity> LatzSchmidt::outputs() const {

@@ -21,7 +21,7 @@ double barkerC(double mu, double nu) {
 
 MuI::MuI(const Parameters& p) : p_(p), i1_(NAN), logA_(NAN) {
     auto check = [](bool good, const char* key, double v, const char* expected) {
-        if (!good) fail<InputError>("rheology muI: ", key, " = ", v, ", expected ", expected);
+        if (!good) failParameter(key, "rheology muI: ", key, " = ", v, ", expected ", expected);
     };
     // Written as good-conditions so that NaN fails every one of them.
     check(p_.muS > 0 && std::isfinite(p_.muS), "muS", p_.muS, "a finite mu_s > 0");
@@ -50,9 +50,10 @@ MuI::MuI(const Parameters& p) : p_(p), i1_(NAN), logA_(NAN) {
         return barkerC(mu, I * jopFrictionDerivative(I) / mu);
     };
     if (!(cJop(iZeta) < 0))
-        fail<InputError>("rheology muI: regularisation barkerGray2017 needs a well-posed range of the mu(I) law, but ",
-                         "C(I) = ", cJop(iZeta), " >= 0 at I = ", iZeta, " (muS ", p_.muS, ", mu2 ", p_.mu2, ", I0 ",
-                         p_.I0, ")");
+        failParameter("regularisation",
+                      "rheology muI: regularisation barkerGray2017 needs a well-posed range of the mu(I) law, but ",
+                      "C(I) = ", cJop(iZeta), " >= 0 at I = ", iZeta, " (muS ", p_.muS, ", mu2 ", p_.mu2, ", I0 ",
+                      p_.I0, ")");
     double lo = 0.0, hi = iZeta;
     for (;;) {
         const double mid = 0.5 * (lo + hi);
@@ -84,12 +85,7 @@ std::unique_ptr<Rheology> MuI::fromDictionary(const Dictionary& dict) {
                          "', expected one of: none barkerGray2017");
     p.alphaReg = dict.getDouble("alphaReg", p.alphaReg);
     p.muInf = dict.getDouble("muInf", p.muInf);
-    try {
-        return std::make_unique<MuI>(p);
-    } catch (const InputError& e) {
-        // Say which file the bad parameter came from.
-        fail<InputError>(dict.where("type"), ": ", e.what());
-    }
+    return std::make_unique<MuI>(p);  // the registry names the file of a bad value
 }
 
 std::vector<RheologyQuantity> MuI::outputs() const {

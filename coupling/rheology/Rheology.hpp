@@ -62,7 +62,8 @@ public:
     virtual double inertialNumber(double p, double gammaDot) const = 0;
 };
 
-// The registry of rheologies, filled by registerRheologies() on first use.
+// The registry of rheologies (registerRheologies.cpp), filled on first use
+// from the list in rheology/sources.cmake.
 const Registry<Rheology>& rheologies();
 
 }  // namespace granair

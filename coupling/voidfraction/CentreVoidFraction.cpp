@@ -3,6 +3,10 @@
 
 namespace granair {
 
+std::unique_ptr<VoidFractionModel> CentreVoidFraction::fromDictionary(const Dictionary&) {
+    return std::make_unique<CentreVoidFraction>();
+}
+
 void CentreVoidFraction::stencil(const CellLocator&, const ParticleState&, int centreCell,
                                  std::vector<CellWeight>& out) const {
     out.clear();

@@ -27,6 +27,8 @@ namespace granair {
 class CentreVoidFraction : public VoidFractionModel {
 public:
     static constexpr const char* typeName = "centre";
+    // No parameters.
+    static std::unique_ptr<VoidFractionModel> fromDictionary(const Dictionary& dict);
 
     std::string name() const override { return typeName; }
     void stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,

@@ -27,14 +27,14 @@ std::array<Vec3, pointsPerShell> shellDirections() {
 }
 }  // namespace
 
-DividedVoidFraction::DividedVoidFraction(int shells) : shells_(shells) {
-    if (shells < 1 || shells > maxShells)
-        fail<InputError>("divided void fraction: shells = ", shells, ", expected 1 <= shells <= ", maxShells);
-    const int n = 1 + pointsPerShell * shells;
+DividedVoidFraction::DividedVoidFraction(long shells) : shells_(static_cast<int>(shells)) {
+    if (shells < 1 || shells > maxShells)  // before anything uses the narrowed shells_
+        failParameter("shells", "divided void fraction: shells = ", shells, ", expected 1 <= shells <= ", maxShells);
+    const int n = 1 + pointsPerShell * shells_;
     const auto dirs = shellDirections();
     points_.reserve(static_cast<std::size_t>(n));
     points_.push_back(Vec3::Zero());
-    for (int k = 1; k <= shells; ++k) {
+    for (int k = 1; k <= shells_; ++k) {
         // Shell k holds the volume fraction (1 + 24(k-1))/N .. (1 + 24k)/N.
         const double a = std::cbrt(static_cast<double>(1 + pointsPerShell * (k - 1)) / n);
         const double b = std::cbrt(static_cast<double>(1 + pointsPerShell * k) / n);
@@ -43,12 +43,8 @@ DividedVoidFraction::DividedVoidFraction(int shells) : shells_(shells) {
     }
 }
 
-std::unique_ptr<VoidFractionModel> DividedVoidFraction::fromDict(const Dictionary& dict) {
-    const long shells = dict.getInt("shells", defaultShells);
-    if (shells < 1 || shells > maxShells)
-        fail<InputError>(dict.where("shells"), ": value ", shells,
-                         " out of range, expected 1 <= shells <= ", maxShells);
-    return std::make_unique<DividedVoidFraction>(static_cast<int>(shells));
+std::unique_ptr<VoidFractionModel> DividedVoidFraction::fromDictionary(const Dictionary& dict) {
+    return std::make_unique<DividedVoidFraction>(dict.getInt("shells", defaultShells));
 }
 
 void DividedVoidFraction::stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,

@@ -64,9 +64,10 @@ public:
     static constexpr int defaultShells = 1;
     static constexpr int maxShells = 4;
 
-    explicit DividedVoidFraction(int shells = defaultShells);
-    // Reads `shells` (optional); throws InputError naming file and key.
-    static std::unique_ptr<VoidFractionModel> fromDict(const Dictionary& dict);
+    // Throws ParameterError (core/Registry.hpp) naming `shells`.
+    explicit DividedVoidFraction(long shells = defaultShells);
+    // Reads `shells` (optional); through the registry errors name the file and key.
+    static std::unique_ptr<VoidFractionModel> fromDictionary(const Dictionary& dict);
 
     std::string name() const override { return typeName; }
     void stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,

@@ -10,18 +10,15 @@ namespace granair {
 
 GaussianVoidFraction::GaussianVoidFraction(double width, double cutoff) : width_(width), cutoff_(cutoff) {
     if (!(width > 0) || !std::isfinite(width))
-        fail<InputError>("gaussian void fraction: width = ", width, " [m], expected a finite width > 0");
+        failParameter("width", "gaussian void fraction: width = ", width, " [m], expected a finite width > 0");
     if (!(cutoff >= minCutoff && cutoff <= maxCutoff))
-        fail<InputError>("gaussian void fraction: cutoff = ", cutoff, ", expected ", minCutoff,
-                         " <= cutoff <= ", maxCutoff, " (in widths)");
+        failParameter("cutoff", "gaussian void fraction: cutoff = ", cutoff, ", expected ", minCutoff,
+                      " <= cutoff <= ", maxCutoff, " (in widths)");
 }
 
-std::unique_ptr<VoidFractionModel> GaussianVoidFraction::fromDict(const Dictionary& dict) {
-    const double width = dict.getDouble("width");  // rejects missing, non-numeric, NaN, inf
-    if (!(width > 0))
-        fail<InputError>(dict.where("width"), ": value ", width, " out of range, expected width > 0 [m]");
-    const double cutoff = dict.has("cutoff") ? dict.getDouble("cutoff", minCutoff, maxCutoff) : defaultCutoff;
-    return std::make_unique<GaussianVoidFraction>(width, cutoff);
+std::unique_ptr<VoidFractionModel> GaussianVoidFraction::fromDictionary(const Dictionary& dict) {
+    // getDouble rejects missing, non-numeric, NaN and inf; the constructor the range.
+    return std::make_unique<GaussianVoidFraction>(dict.getDouble("width"), dict.getDouble("cutoff", defaultCutoff));
 }
 
 void GaussianVoidFraction::stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,

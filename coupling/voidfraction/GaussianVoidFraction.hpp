@@ -66,10 +66,11 @@ public:
     static constexpr double minCutoff = 1.0;
     static constexpr double maxCutoff = 10.0;
 
+    // Throws ParameterError (core/Registry.hpp) naming `width` or `cutoff`.
     GaussianVoidFraction(double width, double cutoff = defaultCutoff);
-    // Reads `width` (required) and `cutoff` (optional); throws InputError
-    // naming file and key for a missing, non-finite or out-of-range value.
-    static std::unique_ptr<VoidFractionModel> fromDict(const Dictionary& dict);
+    // Reads `width` (required) and `cutoff` (optional); through the registry
+    // a missing, non-finite or out-of-range value names the file and key.
+    static std::unique_ptr<VoidFractionModel> fromDictionary(const Dictionary& dict);
 
     std::string name() const override { return typeName; }
     // Not thread-safe: reuses the search buffers below (one model per thread).

@@ -34,6 +34,8 @@ public:
                          std::vector<CellWeight>& out) const = 0;
 };
 
+// The registry of void-fraction models (registerVoidFractionModels.cpp),
+// filled on first use from the list in voidfraction/sources.cmake.
 const Registry<VoidFractionModel>& voidFractionModels();
 
 }  // namespace granair

@@ -1,31 +1,16 @@
-// registerVoidFractionModels.cpp: the registry of void-fraction models.
-//
-// Every model is added here, explicitly, in one function (no static
-// initialisers). To add a model: write its class (header with summary,
-// equation, validity, parameters and reference), add one line below, list its
-// .cpp in sources.cmake, and add tests/data/voidfraction/<type>.dict (the
-// shared tests fail for a registered model without one).
-#include "voidfraction/CentreVoidFraction.hpp"
-#include "voidfraction/DividedVoidFraction.hpp"
-#include "voidfraction/GaussianVoidFraction.hpp"
+// registerVoidFractionModels.cpp: the registry of void-fraction models, built
+// on first use from the list in voidfraction/sources.cmake (generated into
+// generated/voidfraction/ModelList.hpp by cmake/GranairModels.cmake). A new
+// model needs no edit here: docs/adding-a-model.md.
+#include "generated/voidfraction/ModelList.hpp"
+#include "voidfraction/VoidFractionModel.hpp"
 
 namespace granair {
 
-namespace {
-void registerVoidFractionModels(Registry<VoidFractionModel>& reg) {
-    reg.add(CentreVoidFraction::typeName,
-            [](const Dictionary&) { return std::make_unique<CentreVoidFraction>(); });
-    reg.add(DividedVoidFraction::typeName, &DividedVoidFraction::fromDict);
-    reg.add(GaussianVoidFraction::typeName, &GaussianVoidFraction::fromDict);
-}
-}  // namespace
-
 const Registry<VoidFractionModel>& voidFractionModels() {
-    static const Registry<VoidFractionModel> registry = [] {
-        Registry<VoidFractionModel> reg("void-fraction model");
-        registerVoidFractionModels(reg);
-        return reg;
-    }();
+    // Filled once, on first use (thread-safe since C++11).
+    static const Registry<VoidFractionModel> registry =
+        makeRegistry<VoidFractionModel>("void-fraction model", VoidFractionModelList{});
     return registry;
 }
 

@@ -16,8 +16,9 @@ variant() {   # name -> a fresh meshed, decomposed copy of the smoke case
   granair_mesh "$d" >/dev/null
   echo "$d"
 }
-run() {       # dir regex
+run() {       # dir regex: a clean stop, exit code 1, the message matching regex
   local d=$1 regex=$2
+  export EXPECT_RC=1
   sed -i "s/^numberOfSubdomains .*/numberOfSubdomains $np;/" "$d/system/decomposeParDict"
   (cd "$d" && decomposePar -force >/dev/null 2>&1)
   if [ "$np" -gt 1 ]; then
@@ -57,6 +58,29 @@ run "$d" "LIGGGHTS error: .*[Ii]nvalid fix style"
 d=$(variant missing_script)
 rm "$d/dem/in.liggghts"
 run "$d" "in.liggghts"
+
+# strict couplingProperties (issue 13, item 5): a misspelled key, a key given
+# twice, a missing ';', a NaN vector
+d=$(variant misspelled_key)
+sed -i 's/^couplingInterval 50;/couplingIntervall 50;/' "$d/constant/couplingProperties"
+sed -i 's/^gravity/couplingInterval 50;\ngravity/' "$d/constant/couplingProperties"
+run "$d" "couplingProperties' line 2: unknown key 'couplingIntervall' \(did you mean 'couplingInterval'"
+
+d=$(variant misspelled_subkey)
+sed -i 's/voidFraction { type centre; }/voidFraction { type centre; witdh 0.002; }/' "$d/constant/couplingProperties"
+run "$d" "unknown key 'voidFraction.witdh' \(did you mean 'type'"
+
+d=$(variant duplicate_key)
+echo 'gravity (0 0 -9.81);' >> "$d/constant/couplingProperties"
+run "$d" "couplingProperties' line [0-9]+: key 'gravity' given twice \(first on line 3\)"
+
+d=$(variant missing_semicolon)
+sed -i 's/^couplingInterval 50;/couplingInterval 50/' "$d/constant/couplingProperties"
+run "$d" "key 'couplingInterval' \(line 2\): expected a number, found '50 gravity .*';' missing at the end of line 2"
+
+d=$(variant nan_vector)
+sed -i 's/^gravity (0 0 -9.81);/gravity (0 0 nan);/' "$d/constant/couplingProperties"
+run "$d" "key 'gravity' \(line 3\): component z of the vector is 'nan', expected finite numbers"
 
 [ $fails -eq 0 ] && echo "coupled_bad_input: every variant stopped cleanly with the expected message" \
   || { echo "coupled_bad_input: $fails variant(s) wrong"; exit 1; }

@@ -57,5 +57,13 @@ check "$d" "key 'air.model': unknown air model 'darcy'" || fails=$((fails+1))
 d=$(variant missing_alpha); rm "$d/0/alpha.powder"
 check "$d" "0/alpha.powder" || fails=$((fails+1))
 
+# time controls that cannot work (issue 13, item 6; was SIGFPE, exit 136):
+# exit 1 with the key named
+d=$(variant zero_deltaT); sed -i 's/^deltaT .*/deltaT          0;/' "$d/system/controlDict"
+EXPECT_RC=1 check "$d" "controlDict\", key 'deltaT' = 0: expected a time step > 0" || fails=$((fails+1))
+
+d=$(variant zero_maxCo); sed -i 's/^maxCo .*/maxCo           0;/' "$d/system/controlDict"
+EXPECT_RC=1 check "$d" "key 'maxCo' = 0: expected a Courant number > 0" || fails=$((fails+1))
+
 [ $fails -eq 0 ] && echo "mcc_hopper_bad_input: all variants stopped with the expected message" \
   || { echo "mcc_hopper_bad_input: $fails variant(s) wrong"; exit 1; }

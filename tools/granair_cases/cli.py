@@ -24,10 +24,11 @@ def parser(doc, np=1, out_help="results folder"):
 
 
 def parse(ap, default_out, argv=None):
+    """The options; a.out absolute and created (default_out: a path, or a function of the options)."""
     a = ap.parse_args(argv)
     if a.np < 1:
         ap.error(f"--np {a.np}: expected a whole number >= 1")
-    a.out = os.path.abspath(a.out or default_out)
+    a.out = os.path.abspath(a.out or (default_out(a) if callable(default_out) else default_out))
     os.makedirs(a.out, exist_ok=True)
     return a
 

@@ -43,6 +43,42 @@ def read_field(path, n=None):
     return vals.reshape(count, 3) if width == 3 else vals
 
 
+def _list(path):
+    """The body of the one list in an ASCII OpenFOAM file (after its header)."""
+    with open(path) as fh:
+        text = fh.read()
+    text = text[text.index("}", text.index("FoamFile")) + 1:]
+    m = re.search(r"^(\d+)\s*\(", text, re.M)
+    if not m:
+        raise CaseError(f"{path}: no ASCII list (is the mesh written with writeFormat ascii?)")
+    return int(m.group(1)), text[m.end():text.rindex(")")]
+
+
+def plane_cells(case, patch="frontAndBack"):
+    """Each cell of a plane mesh (one cell thick in y, `patch` the empty front and
+    back) as its polygon [(x, z), ...], in OpenFOAM's cell order: the face of the
+    cell on `patch` with the smaller y. Needs an ASCII polyMesh."""
+    mesh = os.path.join(case, "constant", "polyMesh")
+    _, body = _list(os.path.join(mesh, "points"))
+    pts = np.array(body.replace("(", " ").replace(")", " ").split(), dtype=float).reshape(-1, 3)
+    _, body = _list(os.path.join(mesh, "faces"))
+    faces = [[int(i) for i in f.split()] for f in re.findall(r"\d+\(([^)]*)\)", body)]
+    n_owner, body = _list(os.path.join(mesh, "owner"))
+    owner = np.array(body.split(), dtype=int)
+    with open(os.path.join(mesh, "boundary")) as fh:
+        m = re.search(re.escape(patch) + r"\s*\{[^}]*?nFaces\s+(\d+);\s*startFace\s+(\d+);", fh.read())
+    if not m:
+        raise CaseError(f"{mesh}/boundary: no patch '{patch}' (a plane mesh needs its empty front and back)")
+    n, start = int(m.group(1)), int(m.group(2))
+    polys = {}
+    for f in range(start, start + n):
+        xyz = pts[faces[f]]
+        c = owner[f]
+        if c not in polys or xyz[:, 1].mean() < polys[c][1]:
+            polys[c] = (xyz[:, [0, 2]], xyz[:, 1].mean())
+    return [polys[c][0] for c in range(len(polys))]
+
+
 def time_dirs(case):
     """[(t, path)] of the time folders of a case (serial or reconstructed), sorted."""
     out = []

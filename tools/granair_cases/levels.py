@@ -27,7 +27,7 @@ def write(path, **level):
     """Write one level (the contract's keys first, extra keys kept for people)."""
     check(level, path)
     with open(path, "w") as fh:
-        json.dump(level, fh, indent=1, default=float)
+        json.dump(dict({k: level[k] for k in KEYS}, **level), fh, indent=1, default=float)
         fh.write("\n")
 
 

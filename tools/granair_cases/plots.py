@@ -1,10 +1,15 @@
 """Plots of the case layer (matplotlib, Agg: no display needed).
 
     plt = pyplot()
-    field_panels(path, title, x, z, size, rows, xlim, ylim)   cell fields at several times
+    field_panels(path, title, cells, rows, xlim, ylim)   cell fields (polygons) at several times
+    case_fields(path, title, case, times, rows, ...)     the same from a plane OpenFOAM case
     save(fig, path)
 """
+import os
+
 import numpy as np
+
+from . import foam
 
 
 def pyplot():
@@ -20,16 +25,17 @@ def save(fig, path, dpi=120):
     return path
 
 
-def field_panels(path, title, x, z, size, rows, xlim, ylim):
-    """One row of panels per field, one panel per time, cells drawn as squares of
-    their own size at their centres (x, z, size: numpy arrays, the same length
-    unit as xlim/ylim). rows: [(label, cmap, (vmin, vmax) or None, {t: values})];
-    a row with None limits gets a symmetric range (a pressure)."""
+def field_panels(path, title, cells, rows, xlim, ylim):
+    """One row of panels per field, one panel per time, each cell drawn as its
+    polygon (cells: [(x, z) corners] in the unit of xlim/ylim). rows: [(label,
+    cmap, (vmin, vmax) or None, {t: values})]; None limits give a symmetric
+    range (a pressure)."""
+    from matplotlib.collections import PolyCollection
     plt = pyplot()
     times = sorted({t for _, _, _, by_t in rows for t in by_t})
     aspect = (ylim[1] - ylim[0]) / (xlim[1] - xlim[0])
     fig, axes = plt.subplots(len(rows), len(times), squeeze=False,
-                             figsize=(1.9 * len(times) + 1.4, 1.9 * aspect * len(rows) + 0.8))
+                             figsize=(1.9 * len(times) + 2.0, 1.9 * aspect * len(rows) + 0.8))
     fig.suptitle(title, fontsize=10)
     for i, (label, cmap, lim, by_t) in enumerate(rows):
         if lim is None:
@@ -37,19 +43,25 @@ def field_panels(path, title, x, z, size, rows, xlim, ylim):
             lim = (-m, m)
         for j, t in enumerate(times):
             ax = axes[i][j]
-            ax.set_xlim(*xlim)
-            ax.set_ylim(*ylim)
-            ax.set_aspect("equal")
+            ax.set(xlim=xlim, ylim=ylim, aspect="equal", xlabel="x [mm]")
             ax.set_title(f"t = {t:g} s", fontsize=9)
-            ax.set_xlabel("x [mm]", fontsize=8)
             ax.tick_params(labelsize=7)
-            if t not in by_t:
-                continue
-            # marker edge in points from the data scale of this panel
-            fig.canvas.draw()
-            pts = ax.get_window_extent().width * 72 / fig.dpi / (xlim[1] - xlim[0])
-            sc = ax.scatter(x, z, c=by_t[t], s=(size * pts) ** 2, marker="s", cmap=cmap,
-                            vmin=lim[0], vmax=lim[1], linewidths=0)
+            if t in by_t:
+                pc = PolyCollection(cells, array=by_t[t], cmap=cmap, edgecolors="face", linewidths=0.2)
+                pc.set_clim(*lim)
+                ax.add_collection(pc)
         axes[i][0].set_ylabel("z [mm]", fontsize=8)
-        fig.colorbar(sc, ax=list(axes[i]), fraction=0.04, pad=0.02, label=label)
+        fig.colorbar(pc, ax=list(axes[i]), fraction=0.04, pad=0.02, label=label)
     return save(fig, path, dpi=110)
+
+
+def case_fields(path, title, case, times, rows, xlim, ylim):
+    """field_panels of a plane OpenFOAM case (foam.plane_cells: an ASCII mesh, one
+    cell thick): rows [(field, label, cmap, limits)] at the times given that have
+    the field, lengths in mm. Returns the picture's path, or None without any field."""
+    cells = [c * 1e3 for c in foam.plane_cells(case)]
+    by_t = [(label, cmap, lim, {t: foam.read_field(p, len(cells)) for t in times for d in [foam.time_dir(case, t)]
+                                for p in [d and os.path.join(d, field)] if p and os.path.exists(p)})
+            for field, label, cmap, lim in rows]
+    by_t = [r for r in by_t if r[3]]
+    return field_panels(path, title, cells, by_t, xlim, ylim) if by_t else None

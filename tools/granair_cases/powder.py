@@ -4,12 +4,14 @@
                       outlet flow integrated to the discharged mass, the mass balance
     dem(run)          granairFoam: the time series and the particle accounting of the log
     flow_windows(...) mass flow (and outlet gradient) as window means, for plots and level.json
+    continuum_outputs(...)   a continuum run's window means CSV, steady rate, outlet gradient, level.json
+    check_continuum(...)     its checks: finite, the mass balance (outlet flow integrated, the solver's)
 """
 import os
 
 import numpy as np
 
-from . import dem as dem_io, series
+from . import dem as dem_io, levels, series
 
 
 def continuum(run):
@@ -43,3 +45,33 @@ def flow_windows(t, discharged, width, extra=(), keep_last=0.0, tol=0.0):
     dt = series.step_lengths(t)
     rate = np.diff(np.concatenate([[0.0], discharged])) / dt
     return series.window_means(t, dt, [rate] + list(extra), width, keep_last, tol)
+
+
+def continuum_outputs(r, out, t0, t1, window, keep_last, csv_name, level=None):
+    """The outputs of a continuum run (r from continuum()) over the steady window
+    [t0, t1] (t1 None: to the end): out/csv_name (t, mass_flow_kg_s[, outlet_dpdz_Pa_m]:
+    window means; the per-step outlet flux oscillates from step to step) and, given
+    `level` (the contract's other keys), out/level.json. Returns dict(w: the least-squares
+    slope of the discharged mass, dpdz: the time mean of the outlet gradient or None,
+    centres, flow: the window means)."""
+    t, dt, s = r["t"], r["dt"], r["series"]
+    g = s.get("outlet_dpdz_Pa_m")
+    centres, means = series.window_means(t, dt, [r["flow"]] + ([g] if g is not None else []), window, keep_last)
+    os.makedirs(out, exist_ok=True)
+    series.write_csv(os.path.join(out, csv_name), [("t", centres), ("mass_flow_kg_s", means[0])]
+                     + ([("outlet_dpdz_Pa_m", means[1])] if g is not None else []), fmt="{:.6g}")
+    res = dict(w=series.slope(t, r["out"], t0, t1), centres=centres, flow=means[0],
+               dpdz=None if g is None else series.time_mean(t, g, t0, t1, dt))
+    if level is not None:
+        levels.write(os.path.join(out, "level.json"), **dict(level, level="continuum", air=g is not None,
+                     steady_mass_flow_kg_s=res["w"], steady_window_s=[t0, float(t[-1]) if t1 is None else t1],
+                     outlet_dpdz_Pa_m=res["dpdz"], timeseries=csv_name))
+    return res
+
+
+def check_continuum(c, name, r, tol=0.005, why="VOF keeps the powder to round-off; more is powder lost elsewhere"):
+    """Every value finite; the mass balance within tol: the outlet flow integrated (powder
+    leaving through any other boundary counts as error) and the solver's own."""
+    c.true(f"{name}: every value of the time series finite", r["finite"], f"{len(r['t'])} rows")
+    c.near(f"{name}: powder mass balance (outlet flow integrated)", r["balance"], 0.0, tol, why)
+    c.near(f"{name}: solver's mass balance (all boundaries)", r["solver_balance"], 0.0, tol, why)

@@ -15,6 +15,7 @@ serve several templates).
     render(src, dst, values)            copy a template folder, fill every file
     render(src, dst, values, ["dem"])   only some of its files or folders
     fill(text, values, where)           one text
+    constants(parameters)               the upper-case numbers of a case's parameters.py as values
 """
 import os
 import re
@@ -23,6 +24,12 @@ import shutil
 from . import CaseError
 
 PLACEHOLDER = re.compile(r"@([A-Z][A-Z0-9_]*)(?::([^@\s]*))?@")
+
+
+def constants(module):
+    """The case's numbers as template values: every upper-case number or string of
+    its parameters module (so a template names them as parameters.py does)."""
+    return {k: v for k, v in vars(module).items() if k.isupper() and isinstance(v, (int, float, str))}
 
 
 def fill(text, values, where="template"):

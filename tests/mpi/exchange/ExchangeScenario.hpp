@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "core/Particle.hpp"
@@ -127,32 +128,33 @@ inline std::vector<OwnedParticle> expectedOwned(const std::vector<const CellLoca
 }
 
 // Number of mismatches between two owned lists (ids, states bit for bit, cells).
-inline int countMismatches(const std::vector<OwnedParticle>& got, const std::vector<OwnedParticle>& want) {
+inline int countMismatches(const granair::OwnedParticles& got, const std::vector<OwnedParticle>& want) {
     int bad = static_cast<int>(std::max(got.size(), want.size()) - std::min(got.size(), want.size()));
     for (std::size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
-        const ParticleState &a = got[i].state, &b = want[i].state;
+        const ParticleState &a = got.state(i), &b = want[i].state;
         bad += !(a.id == b.id && a.x == b.x && a.v == b.v && a.radius == b.radius &&
-                 got[i].cell == want[i].cell);
+                 got.cell(i) == want[i].cell);
     }
     return bad;
 }
 
-// A test-only locator with CLOSED cells: a point on the face between two
-// slabs is found by BOTH neighbours (as can happen in a general mesh where
-// each rank's point-in-cell test has its own round-off). Otherwise a BoxMesh slab.
-class ClosedSlab : public CellLocator {
+// A test-only locator with CLOSED cells: a point on the boundary between two
+// ranks' blocks is found by BOTH (as can happen in a general mesh where each
+// rank's point-in-cell test has its own round-off). Otherwise the BoxMesh
+// block it wraps (meshLo: the lower corner of the whole mesh).
+class ClosedCells : public CellLocator {
 public:
-    ClosedSlab(int part, int parts) : inner_(cfdSlab(part, parts)) {}
+    ClosedCells(BoxMesh inner, const Vec3& meshLo) : inner_(std::move(inner)), meshLo_(meshLo) {}
     int nCells() const override { return inner_.nCells(); }
     int findCell(const Vec3& x, int hint = -1) const override {
         const int c = inner_.findCell(x, hint);
         if (c >= 0 || inner_.nCells() == 0 || !inner_.bounds().contains(x)) return c;
-        // On the slab's closed boundary but given to the neighbour by the
+        // On the block's closed boundary but given to the neighbour by the
         // half-open rule: take the nearest own cell.
         const BoxMesh::Index3 first = inner_.globalIjk(0), last = inner_.globalIjk(inner_.nCells() - 1);
         BoxMesh::Index3 ijk;
         for (int a = 0; a < 3; ++a) {
-            const int i = static_cast<int>(std::floor((x[a] - kLo[a]) / inner_.spacing()[a]));
+            const int i = static_cast<int>(std::floor((x[a] - meshLo_[a]) / inner_.spacing()[a]));
             ijk[a] = std::clamp(i, first[a], last[a]);
         }
         return inner_.localCell(ijk);
@@ -164,7 +166,38 @@ public:
 
 private:
     BoxMesh inner_;
+    Vec3 meshLo_;
 };
+
+// The CFD slabs of the scenario with closed cells.
+class ClosedSlab : public ClosedCells {
+public:
+    ClosedSlab(int part, int parts) : ClosedCells(cfdSlab(part, parts), kLo) {}
+};
+
+// backward() of (id, x, owner rank) per owned particle: the number of dem
+// particles of this rank whose values did not come home intact from their
+// lowest finder (0 when every value is back, once: out is NaN-filled).
+inline int backwardMismatches(granair::ParticleExchange& ex, const granair::OwnedParticles& owned,
+                              const std::vector<ParticleState>& dem,
+                              const std::vector<const CellLocator*>& meshes) {
+    const int width = 5;
+    std::vector<double> values, out;
+    for (std::size_t k = 0; k < owned.size(); ++k) {
+        values.push_back(static_cast<double>(owned.state(k).id));  // ids < 2^53: exact
+        for (int a = 0; a < 3; ++a) values.push_back(owned.state(k).x[a]);
+        values.push_back(worldRank());
+    }
+    ex.backward(values, width, out);
+    if (out.size() != dem.size() * width) return static_cast<int>(dem.size());
+    int wrong = 0;
+    for (std::size_t i = 0; i < dem.size(); ++i) {
+        wrong += out[i * width] != static_cast<double>(dem[i].id);
+        for (int a = 0; a < 3; ++a) wrong += out[i * width + 1 + a] != dem[i].x[a];
+        wrong += out[i * width + 4] != lowestFinder(meshes, dem[i].x);
+    }
+    return wrong;
+}
 
 // Sum of an int over MPI_COMM_WORLD.
 inline long globalSum(long local) {

@@ -32,7 +32,7 @@ std::vector<ParticleState> awayFromHole(std::vector<ParticleState> dem) {
 
 // A good step after an error: everything still arrives (no stale messages).
 void checkUsable(ParticleExchange& ex, const std::vector<ParticleState>& dem) {
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     ex.forward(dem, owned);
     CHECK(globalSum(static_cast<long>(owned.size())) == globalSum(static_cast<long>(dem.size())));
     std::vector<double> ids, out;
@@ -49,7 +49,7 @@ TEST_CASE("a particle outside the mesh on one rank: every rank throws, naming it
     const int rank = worldRank(), size = worldSize();
     const BoxMesh mesh = cfdSlab(rank, size);
     ParticleExchange ex(MPI_COMM_WORLD, mesh);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     const auto good = demParticles(rank, size, 0);
 
     // Above the top of the box, on the last rank only.
@@ -80,7 +80,7 @@ TEST_CASE("a particle in no cell of its candidate ranks: every rank throws, nami
     const int rank = worldRank(), size = worldSize();
     const HoleySlab mesh(rank, size);
     ParticleExchange ex(MPI_COMM_WORLD, mesh);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     const auto good = awayFromHole(demParticles(rank, size, 0));
 
     // Inside the last slab's box but in its hole, held by rank 0: found
@@ -121,7 +121,7 @@ TEST_CASE("backward with a width that differs between ranks: every rank throws",
     if (size < 2) return;  // needs two ranks to disagree
     const BoxMesh mesh = cfdSlab(rank, size);
     ParticleExchange ex(MPI_COMM_WORLD, mesh);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     const auto dem = demParticles(rank, size, 0);
     ex.forward(dem, owned);
     const int width = rank == 0 ? 3 : 2;

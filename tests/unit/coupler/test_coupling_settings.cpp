@@ -21,6 +21,16 @@ TEST_CASE("coupling settings read the case dictionary", "[coupler]") {
     CHECK(s.voidFraction->name() == "centre");
     CHECK_FALSE(s.buoyancyForce);
     CHECK(s.pressureGradientForce);
+    CHECK_FALSE(s.oneWay);
+}
+
+TEST_CASE("momentum coupling is two-way by default, one-way on request", "[coupler]") {
+    const std::string base = "couplingInterval 5; drag { type ErgunGidaspow; } voidFraction { type centre; } ";
+    CHECK(CouplingSettings::read(Dictionary::fromString(base + "momentumCoupling one-way;", "cp")).oneWay);
+    CHECK_FALSE(CouplingSettings::read(Dictionary::fromString(base + "momentumCoupling two-way;", "cp")).oneWay);
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(base + "momentumCoupling oneway;", "cp")),
+                      Contains("cp") && Contains("momentumCoupling") && Contains("'oneway'") &&
+                          Contains("expected two-way"));
 }
 
 TEST_CASE("coupling settings reject bad values naming file and key", "[coupler]") {

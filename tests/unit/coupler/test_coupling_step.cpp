@@ -23,20 +23,19 @@ CouplingSettings settings(const std::string& drag, const std::string& vf, double
     return CouplingSettings::read(d);
 }
 
-std::vector<OwnedParticle> lattice(const BoxMesh& mesh, int perAxis, const Vec3& lo, const Vec3& hi,
-                                   double radius, const Vec3& v) {
-    std::vector<OwnedParticle> out;
+OwnedParticles lattice(const BoxMesh& mesh, int perAxis, const Vec3& lo, const Vec3& hi, double radius,
+                       const Vec3& v) {
+    OwnedParticles out;
     long id = 1;
     for (int i = 0; i < perAxis; ++i)
         for (int j = 0; j < perAxis; ++j)
             for (int k = 0; k < perAxis; ++k) {
-                OwnedParticle p;
-                p.state.id = id++;
-                p.state.x = lo + ((Vec3(i, j, k).array() + 0.5) / perAxis * (hi - lo).array()).matrix();
-                p.state.v = v;
-                p.state.radius = radius;
-                p.cell = mesh.findCell(p.state.x);
-                out.push_back(p);
+                ParticleState p;
+                p.id = id++;
+                p.x = lo + ((Vec3(i, j, k).array() + 0.5) / perAxis * (hi - lo).array()).matrix();
+                p.v = v;
+                p.radius = radius;
+                out.add(p, mesh.findCell(p.x));
             }
     return out;
 }
@@ -65,11 +64,10 @@ TEST_CASE("momentum given to the air equals the drag on the particles", "[couple
         CouplingStep step(cs, mesh, FluidProperties{1.2, 1.8e-5});
         std::mt19937 rng(42);
         std::uniform_real_distribution<double> ux(0.0, 0.02), uz(0.0, 0.04), uv(-0.1, 0.1);
-        std::vector<OwnedParticle> parts(500);
-        for (size_t i = 0; i < parts.size(); ++i) {
-            parts[i].state = {static_cast<std::int64_t>(i + 1), Vec3(ux(rng), ux(rng), uz(rng)),
-                              Vec3(uv(rng), uv(rng), uv(rng)), 5e-4};
-            parts[i].cell = mesh.findCell(parts[i].state.x);
+        OwnedParticles parts;
+        for (int i = 0; i < 500; ++i) {
+            const ParticleState p{i + 1, Vec3(ux(rng), ux(rng), uz(rng)), Vec3(uv(rng), uv(rng), uv(rng)), 5e-4};
+            parts.add(p, mesh.findCell(p.x));
         }
         const int n = mesh.nCells();
         std::vector<double> U(3 * n), eps(n), K(n), Us(3 * n), gradP(3 * n, 0.0), f;
@@ -129,10 +127,9 @@ TEST_CASE("coarse-grained parcel feels s^3 times the primary drag", "[coupler]")
     auto prim = settings("ErgunGidaspow", "centre", 1.0);
     CouplingStep parcelStep(one, mesh, FluidProperties{});
     CouplingStep primaryStep(prim, mesh, FluidProperties{});
-    std::vector<OwnedParticle> parcel(1), primaries;
-    parcel[0].state = {1, Vec3(0.005, 0.005, 0.005), Vec3::Zero(), 2 * r};
-    parcel[0].cell = 0;
-    primaries = lattice(mesh, 2, Vec3(0, 0, 0), Vec3(0.01, 0.01, 0.01), r, Vec3::Zero());
+    OwnedParticles parcel;
+    parcel.add({1, Vec3(0.005, 0.005, 0.005), Vec3::Zero(), 2 * r}, 0);
+    const OwnedParticles primaries = lattice(mesh, 2, Vec3(0, 0, 0), Vec3(0.01, 0.01, 0.01), r, Vec3::Zero());
     std::vector<double> U{0, 0, 0.2}, e1(1), e2(1), K1(1), K2(1), Us(3), g(3, 0.0), f1, f2;
     parcelStep.particlesToCells(parcel, U.data(), e1.data(), K1.data(), Us.data());
     primaryStep.particlesToCells(primaries, U.data(), e2.data(), K2.data(), Us.data());
@@ -145,9 +142,8 @@ TEST_CASE("void fraction floor is applied and counted", "[coupler]") {
     BoxMesh mesh(Vec3(0, 0, 0), Vec3(0.004, 0.001, 0.001), {4, 1, 1});
     auto cs = settings("ErgunGidaspow", "centre");
     CouplingStep step(cs, mesh, FluidProperties{});
-    std::vector<OwnedParticle> p(1);
-    p[0].state = {7, Vec3(0.0005, 0.0005, 0.0005), Vec3::Zero(), 0.0008};
-    p[0].cell = 0;
+    OwnedParticles p;
+    p.add({7, Vec3(0.0005, 0.0005, 0.0005), Vec3::Zero(), 0.0008}, 0);
     std::vector<double> U(12, 0.0), eps(4), K(4), Us(12);
     step.particlesToCells(p, U.data(), eps.data(), K.data(), Us.data());
     CHECK(eps[0] == cs.voidFractionFloor);

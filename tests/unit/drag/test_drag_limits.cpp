@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "DragTestSupport.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "drag/DragLaw.hpp"
@@ -12,6 +13,7 @@ namespace {
 
 const granair::FluidProperties air{1.2, 1.8e-5};
 
+// One named law with its default parameters (for the law-specific limits).
 std::unique_ptr<granair::DragLaw> law(const std::string& name) {
     return granair::dragLaws().create(granair::Dictionary::fromString("type " + name + ";", "test"));
 }
@@ -28,7 +30,7 @@ TEST_CASE("drag laws: limits and coarse graining", "[drag][limits]") {
         // At |u| = 0 each law must return its creeping-flow limit, never NaN
         // (Cd ~ 1/Re and |u| -> 0 cancel analytically in each implementation).
         for (const auto& name : granair::dragLaws().names()) {
-            auto l = law(name);
+            auto l = dragtest::lawFromData(name);
             for (double eps : {0.4, 0.7, 0.85, 1.0}) {
                 const double beta = l->beta(1e-4, eps, 0.0, air);
                 INFO(name << " at eps = " << eps << ": beta(slip = 0) = " << beta);
@@ -85,7 +87,7 @@ TEST_CASE("drag laws: limits and coarse graining", "[drag][limits]") {
     SECTION("parcelBeta: s = 1 is the particle, s = 2 is 8 primary particles") {
         const granair::FluidProperties water{998.2, 1.002e-3};
         for (const auto& name : granair::dragLaws().names()) {
-            auto l = law(name);
+            auto l = dragtest::lawFromData(name);
             for (const auto& f : {air, water}) {
                 for (double eps : {0.45, 0.9, 1.0}) {
                     for (double slip : {0.0, 0.05, 2.0}) {

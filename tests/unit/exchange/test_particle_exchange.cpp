@@ -47,7 +47,7 @@ TEST_CASE("exchange on one rank owns every particle in dem order, backward round
     const BoxMesh mesh = wholeMesh();
     ParticleExchange ex(MPI_COMM_SELF, mesh);
     const auto dem = randomParticles(500, 1);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     ex.forward(dem, owned);
     REQUIRE(owned.size() == dem.size());
     for (std::size_t i = 0; i < dem.size(); ++i) {
@@ -83,7 +83,7 @@ TEST_CASE("exchange on one rank owns every particle in dem order, backward round
     }
 
     // No particles at all.
-    owned.resize(3);
+    owned.add(ParticleState{}, 0);  // cleared by forward()
     ex.forward({}, owned);
     CHECK(owned.empty());
     out.resize(5);
@@ -97,7 +97,7 @@ TEST_CASE("a particle outside the mesh is an error naming its id and position, r
     auto dem = randomParticles(10, 3);
     dem[6].id = 4242;
     dem[6].x = Vec3(0.5, 0.25, 2.5);  // above the top z = 2
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     CHECK_THROWS_AS(ex.forward(dem, owned), InputError);
     CHECK_THROWS_WITH(ex.forward(dem, owned),
                       Contains("particle 4242 at (0.5 0.25 2.5) is outside the CFD mesh"));
@@ -129,7 +129,7 @@ TEST_CASE("a particle outside the mesh is an error naming its id and position, r
 TEST_CASE("non-finite position or velocity and bad radius name the id and the value", "[exchange]") {
     const BoxMesh mesh = wholeMesh();
     ParticleExchange ex(MPI_COMM_SELF, mesh);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
 
@@ -171,7 +171,7 @@ TEST_CASE("backward rejects a wrong number of values or width, constructor a bad
     const BoxMesh mesh = wholeMesh();
     ParticleExchange ex(MPI_COMM_SELF, mesh);
     const auto dem = randomParticles(20, 6);
-    std::vector<OwnedParticle> owned;
+    OwnedParticles owned;
     ex.forward(dem, owned);
     std::vector<double> out;
     CHECK_THROWS_AS(ex.backward(std::vector<double>(59), 3, out), InputError);

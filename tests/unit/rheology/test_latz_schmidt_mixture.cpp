@@ -160,7 +160,17 @@ TEST_CASE("latzSchmidt in the mixture solver: per-cell terms, cap and bad input"
                           Contains("key 'rhoP': missing"));
         CHECK_THROWS_WITH(
             GranularTemperatureModel::fromDictionary(Dictionary::fromString(base + " rhoP 1060; TMin 0;", "props")),
-            Contains("props") && Contains("TMin = 0"));
+            Contains("file 'props', key 'TMin'") && Contains("TMin = 0"));
+        // The closure comes from the rheology registry: its own key errors, and any other rheology, are named.
+        CHECK_THROWS_WITH(GranularTemperatureModel::fromDictionary(
+                              Dictionary::fromString(
+                                  "type latzSchmidt; c0 0.5579; cMax 0.5771; T0 0.41; eta0 0.00052; lambda0 0.001;"
+                                  " eps0 -1; rhoP 1060;",
+                                  "props")),
+                          Contains("file 'props', key 'eps0'") && Contains("eps0 = -1"));
+        CHECK_THROWS_WITH(GranularTemperatureModel::fromDictionary(Dictionary::fromString(
+                              "type muI; muS 0.4; mu2 0.9; I0 0.05; d 1e-3; rhoP 1060;", "props")),
+                          Contains("file 'props', key 'type'") && Contains("needs rheology 'latzSchmidt', got 'muI'"));
         CHECK_NOTHROW(GranularTemperatureModel::fromDictionary(Dictionary::fromString(base + " rhoP 1060;", "props")));
     }
 }

@@ -2,8 +2,9 @@
 // registered rheology must have tests/data/rheology/<name>.dat (variants of
 // its parameters in <name>.<variant>.dat), each holding the rheology's
 // dictionary, a relative tolerance, the input and output names, and points.
-// The expected values come from tests/data/rheology/make_reference.py, which
-// evaluates the published formulas independently of the C++ code.
+// The expected values come from the model's own script
+// tests/data/rheology/<name>.py (run by make_reference.py), which evaluates
+// the published formulas independently of the C++ code.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "ModelTestSupport.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "rheology/MuI.hpp"
@@ -66,12 +68,6 @@ void setInput(granair::GranularState& s, const std::string& name, double v) {
     else FAIL("unknown input '" << name << "' in a rheology data file");
 }
 
-// The registered rheology a data file belongs to: its name up to the first '.'.
-std::string modelOf(const fs::path& file) {
-    const std::string stem = file.stem().string();
-    return stem.substr(0, stem.find('.'));
-}
-
 }  // namespace
 
 TEST_CASE("rheologies: reference data files", "[rheology][data]") {
@@ -80,7 +76,7 @@ TEST_CASE("rheologies: reference data files", "[rheology][data]") {
         for (const auto& e : fs::directory_iterator(dataDir)) {
             if (e.path().extension() != ".dat") continue;
             ++files;
-            const std::string model = modelOf(e.path());
+            const std::string model = modeltest::modelOf(e.path());
             INFO("data file " << e.path().string());
             REQUIRE(granair::rheologies().has(model));
 
@@ -127,12 +123,8 @@ TEST_CASE("rheologies: reference data files", "[rheology][data]") {
         CHECK(files >= static_cast<int>(granair::rheologies().names().size()));
     }
 
-    SECTION("every registered rheology has a reference data file") {
-        REQUIRE(granair::rheologies().names() == std::vector<std::string>{"latzSchmidt", "muI"});
-        for (const auto& name : granair::rheologies().names()) {
-            INFO("rheology " << name << ": missing " << (dataDir / (name + ".dat")).string());
-            CHECK(fs::exists(dataDir / (name + ".dat")));
-        }
+    SECTION("every registered rheology has reference data, and every data file a registered rheology") {
+        modeltest::checkReferenceData(granair::rheologies(), "rheology", dataDir, ".dat", true);
     }
 
     SECTION("barkerGray2017: I1 is the lower well-posedness root of the Jop form") {

@@ -73,6 +73,31 @@ class Foam(unittest.TestCase):
             self.assertEqual([t for t, _ in gc.foam.time_dirs(os.path.join(d, "case"))], [0, 0.25, 0.5])
 
 
+    def test_plane_cells_and_their_picture(self):
+        # two cells side by side, x in [0, 2], z in [0, 1], y in [0, 0.1]; front y = 0, back y = 0.1
+        head = "FoamFile { version 2.0; format ascii; class %s; object %s; }\n"
+        pts = [(x, y, z) for y in (0, 0.1) for z in (0, 1) for x in (0, 1, 2)]   # 0-5 front, 6-11 back
+        faces = ["4(1 7 10 4)", "4(0 3 4 1)", "4(1 4 5 2)", "4(6 7 10 9)", "4(7 8 11 10)"]
+        owner = [0, 0, 1, 0, 1]                  # one internal face, then frontAndBack (4 faces)
+        with tempfile.TemporaryDirectory() as d:
+            m = os.path.join(d, "constant", "polyMesh")
+            write(os.path.join(m, "points"), head % ("vectorField", "points") + f"{len(pts)}\n(\n"
+                  + "\n".join("(%g %g %g)" % p for p in pts) + "\n)\n")
+            write(os.path.join(m, "faces"), head % ("faceList", "faces") + "5\n(\n" + "\n".join(faces) + "\n)\n")
+            write(os.path.join(m, "owner"), head % ("labelList", "owner") + "5\n(\n" + "\n".join(map(str, owner)) + "\n)\n")
+            write(os.path.join(m, "boundary"), head % ("polyBoundaryMesh", "boundary")
+                  + "1\n(\n    frontAndBack\n    {\n        type empty;\n        nFaces 4;\n        startFace 1;\n    }\n)\n")
+            cells = gc.foam.plane_cells(d)
+            self.assertEqual(len(cells), 2)
+            np.testing.assert_array_equal(sorted(map(tuple, cells[1])), [(1, 0), (1, 1), (2, 0), (2, 1)])
+            write(os.path.join(d, "0", "eps"), "internalField nonuniform List<scalar> 2(0.4 1);\n")
+            png = gc.plots.case_fields(os.path.join(d, "f.png"), "t", d, [0], [("eps", "eps", "viridis", (0, 1))],
+                                       (0, 2000), (0, 1000))
+            self.assertTrue(os.path.getsize(png) > 1000)
+            self.assertIsNone(gc.plots.case_fields(os.path.join(d, "g.png"), "t", d, [0],
+                                                   [("p", "p", "RdBu_r", None)], (0, 2000), (0, 1000)))
+
+
 class Series(unittest.TestCase):
     def test_rates_and_windows(self):
         t = np.arange(1, 101) * 0.01            # 1 s in 0.01 s steps

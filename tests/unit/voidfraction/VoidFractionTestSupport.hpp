@@ -28,15 +28,15 @@ private:
     std::mt19937_64 g_;
 };
 
-inline std::string dataFile(const std::string& type) {
-    return std::string(GRANAIR_TEST_DATA_DIR) + "/voidfraction/" + type + ".dict";
-}
+inline std::string dataDir() { return std::string(GRANAIR_TEST_DATA_DIR) + "/voidfraction"; }
+inline std::string dataFile(const std::string& type) { return dataDir() + "/" + type + ".dict"; }
 
 // The model `type` with the parameters in tests/data/voidfraction/<type>.dict;
 // a registered model without a data file fails the test.
 inline std::unique_ptr<granair::VoidFractionModel> modelFromData(const std::string& type) {
     const std::string file = dataFile(type);
-    INFO("every registered void-fraction model needs a parameter file " << file);
+    INFO("void-fraction model " << type << " is registered but has no parameter file " << file
+                                 << " (docs/adding-a-model.md)");
     REQUIRE(std::ifstream(file).good());
     const auto dict = granair::Dictionary::fromFile(file);
     REQUIRE(dict.getString("type") == type);

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# SIGINT / SIGTERM end granairFoam cleanly (issue 13, item 7): the coupling
+# step in hand is finished, the message says where the run stopped and that
+# the outputs are complete, the time series has exactly one row per step
+# done, the fields of the stop time are written, and the exit code is
+# 128 + signal; no rank hangs. Runs the particle-in-stream case (endTime
+# raised to 100 s, far beyond the test) and signals it once it has run
+# a few steps:
+#   serial, SIGINT to granairFoam                      -> exit 130
+#   2 ranks, SIGTERM to one rank (a batch system
+#   signals the ranks; the others follow)              -> mpirun exits 143
+#   2 ranks, SIGTERM to mpirun (it passes SIGTERM on to
+#   the ranks after odls_base_sigkill_timeout seconds
+#   and exits 1 itself: Open MPI's rule)               -> the ranks stop cleanly
+# Usage: stop_signal.sh WORKDIR
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+work=$1
+. "$here/../../tools/case-lib.sh"
+rm -rf "$work"; mkdir -p "$work"
+fails=0
+
+start() {   # name np -> a fresh case dir in $d
+  d=$work/$1
+  cp -r "$here/../data/particle-in-stream" "$d"
+  sed -i 's/endTime 0.1;/endTime 100;/' "$d/system/controlDict"
+  granair_mesh "$d"
+  granair_decompose "$d" "$2"
+}
+wait_rows() {   # wait until the time series has >= 5 rows (at most 120 s)
+  local i
+  for i in $(seq 1 600); do
+    [ -f "$d/postProcessing/timeSeries.csv" ] && [ "$(wc -l < "$d/postProcessing/timeSeries.csv")" -gt 5 ] && return 0
+    sleep 0.2
+  done
+  echo "stop_signal: the run did not start" >&2; return 1
+}
+check() {   # name rc expected_rc signal_name
+  local name=$1 rc=$2 want=$3 sig=$4 log=$d/log/run.log
+  local ok=1
+  tail -n 4 "$log"
+  [ "$rc" -eq "$want" ] || { echo "  $name: exit $rc, expected $want"; ok=0; }
+  local line t k
+  line=$(grep "granairFoam: stopped by $sig at t = " "$log" || true)
+  [ -n "$line" ] || { echo "  $name: no 'stopped by $sig' message"; ok=0; }
+  grep -q "The outputs are complete up to that time" "$log" || { echo "  $name: no 'outputs complete' line"; ok=0; }
+  if [ -n "$line" ]; then
+    t=$(echo "$line" | sed 's/.* at t = \([^ ]*\) s, after coupling step \([0-9]*\) of.*/\1/')
+    k=$(echo "$line" | sed 's/.* at t = \([^ ]*\) s, after coupling step \([0-9]*\) of.*/\2/')
+    rows=$(($(wc -l < "$d/postProcessing/timeSeries.csv") - 1))
+    last=$(tail -n 1 "$d/postProcessing/timeSeries.csv" | cut -d, -f1)
+    [ "$rows" -eq "$k" ] || { echo "  $name: $rows time-series rows for $k steps"; ok=0; }
+    "$GRANAIR_PYTHON" -c "import sys; sys.exit(abs(float('$last') - float('$t')) > 1e-9)" \
+      || { echo "  $name: last row t = $last, stopped at t = $t"; ok=0; }
+    { [ -f "$d/$t/U" ] || [ -f "$d/processor0/$t/U" ]; } || { echo "  $name: no fields at t = $t"; ok=0; }
+    echo "  $name: stopped at t = $t after $k steps, $rows rows, exit $rc"
+  fi
+  [ $ok -eq 1 ] || fails=$((fails+1))
+}
+
+# serial, SIGINT
+start serial_sigint 1
+(cd "$d" && exec granairFoam > log/run.log 2>&1) & pid=$!
+wait_rows; kill -INT $pid; rc=0; wait $pid || rc=$?
+check serial_sigint $rc 130 SIGINT
+
+# 2 ranks, SIGTERM to one rank
+start np2_sigterm_rank 2
+(cd "$d" && exec mpirun -np 2 granairFoam -parallel > log/run.log 2>&1) & pid=$!
+wait_rows; kill -TERM "$(pgrep -P $pid granairFoam | tail -n 1)"; rc=0; wait $pid || rc=$?
+check np2_sigterm_rank $rc 143 SIGTERM
+
+# 2 ranks, SIGTERM to mpirun: Open MPI passes it on after
+# odls_base_sigkill_timeout seconds (default 1 s) and SIGKILLs as long after:
+# enough for a step of this small case
+start np2_sigterm_mpirun 2
+(cd "$d" && exec mpirun -np 2 granairFoam -parallel > log/run.log 2>&1) & pid=$!
+wait_rows; kill -TERM $pid; rc=0; wait $pid || rc=$?
+check np2_sigterm_mpirun $rc 1 SIGTERM
+
+[ $fails -eq 0 ] && echo "stop_signal: every run stopped cleanly" || { echo "stop_signal: $fails run(s) wrong"; exit 1; }
