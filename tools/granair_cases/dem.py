@@ -120,9 +120,10 @@ def read_dump(path):
 
 
 def read_dumps(path):
-    """Every snapshot of a LIGGGHTS `custom` dump file (one file, many steps, as
-    `dump_modify append yes` writes it): [(step, {column: numpy array})]; an
-    empty snapshot has arrays of length 0."""
+    """Every snapshot of a LIGGGHTS `custom` (or `local`) dump file (one file, many
+    steps, as `dump_modify append yes` writes it): [(step, {column: numpy array})],
+    the columns named as in its ITEM: ATOMS (ENTRIES) line; an empty snapshot has
+    arrays of length 0."""
     with open(path) as fh:
         lines = fh.read().splitlines()
     out, i = [], 0
@@ -131,7 +132,7 @@ def read_dumps(path):
             i += 1
             continue
         step, n = int(lines[i + 1]), int(lines[i + 3])
-        j = next((k for k in range(i + 4, len(lines)) if lines[k].startswith("ITEM: ATOMS")), None)
+        j = next((k for k in range(i + 4, len(lines)) if lines[k].startswith(("ITEM: ATOMS", "ITEM: ENTRIES"))), None)
         cols = lines[j].split()[2:] if j is not None else []
         rows = [line.split() for line in lines[j + 1:j + 1 + n]] if j is not None else []
         if j is None or len(rows) < n or any(len(r) != len(cols) for r in rows):
