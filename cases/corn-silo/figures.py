@@ -1,6 +1,7 @@
 """The corn silo's figures (post.study): mass flow with the Beverloo band, wall
 loads (maximum and where) against the angle, wall-load profiles with Janssen's
 band, strain invariants against the angle, the flow pattern as coloured layers."""
+import glob
 import math
 import os
 
@@ -19,6 +20,7 @@ def all(out, by_angle, run_root):
     profiles(plt, out, angles, means)
     strain(plt, out, angles, means)
     layers(plt, out, angles, by_angle, run_root)
+    force_chains(plt, out, angles, by_angle, run_root)
 
 
 def _err(ax, angles, means, key, label, **kw):
@@ -89,6 +91,7 @@ def profiles(plt, out, angles, means):
     axes[2].set(xlabel="wall shear stress [Pa]", title="discharge, mean")
     for ax in axes:
         ax.set_xlim(0, None)
+        ax.set_ylim(-0.01, max(m["fill_surface_m"] for m in means) + 0.03)
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
     fig.suptitle("Ring-mean wall loads (hopper below the kink, shaft above; mean of the runs)", fontsize=10)
@@ -97,9 +100,15 @@ def profiles(plt, out, angles, means):
 
 
 def strain(plt, out, angles, means):
-    fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
-    _err(axes[0], angles, means, "I1_mean", "I1")
-    _err(axes[1], angles, means, "J2_mean", "J2 = I2 - I1^2/3", color="tab:red")
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    for ax, inv in zip(axes, ("I1", "J2")):
+        _err(ax, angles, means, f"{inv}_mean", "convex hull: mean of the 10 ms strains", color="tab:blue")
+        _err(ax, angles, means, f"{inv}_of_mean", "convex hull: of the mean strain", color="tab:blue", ls="--",
+             mfc="none")
+        if any(math.isfinite(m["cg_" + inv]) for m in means):
+            _err(ax, angles, means, f"cg_{inv}", f"CG velocity field (Gauss w = {P.CG_WIDTH * 1e3:.0f} mm): "
+                 "of the mean strain rate x 10 ms", color="tab:green", ls=":")
+    axes[0].legend(fontsize=7)
     for ax, lab in zip(axes, ("I1 = tr eps", "J2 = I2 - I1^2/3")):
         ax.set(xlabel="hopper angle from the horizontal [deg]", ylabel=f"{lab} per {P.CV_EVERY:g} s")
         ax.axhline(0, color="0.5", lw=0.6)
@@ -117,7 +126,8 @@ def layers(plt, out, angles, by_angle, run_root):
     found = [(a, p) for a, p in found if os.path.exists(os.path.join(p, "final.dump"))]
     if not found:
         return
-    fig, axes = plt.subplots(1, len(found), figsize=(2.3 * len(found) + 0.6, 5.6), squeeze=False)
+    fig, axes = plt.subplots(1, len(found), figsize=(max(4.5, 2.3 * len(found) + 0.6), 5.6), squeeze=False)
+    fig.subplots_adjust(left=0.08, right=0.98, bottom=0.08, top=0.86, wspace=0.25)
     d = P.d_mass_mean()
     for ax, (a, p) in zip(axes[0], found):
         fill, final = gc.dem.read_dump(os.path.join(p, "fill.dump")), gc.dem.read_dump(os.path.join(p, "final.dump"))
@@ -129,17 +139,62 @@ def layers(plt, out, angles, by_angle, run_root):
         per_m = ax.get_window_extent().width * 72 / fig.dpi / (2.1 * R)      # points per metre
         sel = np.abs(final["y"]) < d
         col = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
-        ax.scatter(final["x"][sel], final["z"][sel], s=(2 * final["radius"][sel] * per_m) ** 2,
+        ax.scatter(final["x"][sel], final["z"][sel], s=(0.9 * 2 * final["radius"][sel] * per_m) ** 2,
                    c=np.where(col, "tab:orange", "tab:blue"), linewidths=0)
         ro = P.D_OUTLET / 2
         ax.plot([-ro, -R, -R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
         ax.plot([ro, R, R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
         m = by_angle[a][0]
         t_end = by_angle[a][1][0]["discharge_s"]
-        ax.set_title(f"{a} deg, t = {t_end:g} s\n{m['pattern']}", fontsize=8)
+        ax.set_title(f"{a} deg, t = {t_end:.2f} s\n{m['pattern']}", fontsize=8)
         ax.set_xlabel("x [m]")
         ax.tick_params(labelsize=7)
     axes[0][0].set_ylabel("z [m]")
-    fig.suptitle(f"Layers {P.LAYER * 1e3:.0f} mm thick at rest, after the discharge (slice |y| < d)", fontsize=9)
-    fig.tight_layout()
+    fig.suptitle(f"Layers {P.LAYER * 1e3:.0f} mm thick at rest,\nafter the discharge (slice |y| < d)", fontsize=9)
     gc.plots.save(fig, os.path.join(out, "flow_pattern.png"), dpi=130)
+
+
+def force_chains(plt, out, angles, by_angle, run_root):
+    """The contact network of the first run of every angle in a slice |y| < d
+    (contact midpoints), at rest and at the end of the discharge: a line from
+    centre to centre for every contact stronger than the mean, its width and
+    colour the force over the mean force."""
+    from matplotlib.collections import LineCollection
+    found = []
+    for a in angles:
+        post = os.path.join(run_root, f"a{a}-s1", "post")
+        pairs = sorted(glob.glob(os.path.join(post, "pairs_*.dump")), key=lambda p: int(p.rsplit("_", 1)[1][:-5]))
+        if pairs:
+            found.append((a, [pairs[0]] + ([pairs[-1]] if len(pairs) > 1 else [])))
+    if not found:
+        return
+    rows = max(len(p) for _, p in found)
+    fig, axes = plt.subplots(rows, len(found), figsize=(max(4.5, 2.3 * len(found) + 0.8), 5.2 * rows), squeeze=False)
+    d, R = P.d_mass_mean(), P.D_SILO / 2
+    for j, (a, paths) in enumerate(found):
+        dt = by_angle[a][1][0]["dt_s"]
+        for i, path in enumerate(paths):
+            (step, c), = gc.dem.read_dumps(path)[:1]
+            xi = np.column_stack([c[f"c_pairs[{k}]"] for k in (1, 2, 3)])
+            xj = np.column_stack([c[f"c_pairs[{k}]"] for k in (4, 5, 6)])
+            f = np.linalg.norm(np.column_stack([c[f"c_pairs[{k}]"] for k in (10, 11, 12)]), axis=1)
+            mean = float(f.mean()) if len(f) else 1.0
+            sel = (np.abs(0.5 * (xi[:, 1] + xj[:, 1])) < d) & (f > mean)
+            order = np.argsort(f[sel])
+            segs = np.stack([xi[sel][:, [0, 2]], xj[sel][:, [0, 2]]], axis=1)[order]
+            lc = LineCollection(segs, linewidths=0.4 * f[sel][order] / mean, cmap="inferno_r",
+                                norm=plt.Normalize(1, 6))
+            lc.set_array(f[sel][order] / mean)
+            ax = axes[i][j]
+            ax.add_collection(lc)
+            h = P.hopper_height(a)
+            top = by_angle[a][0]["fill_surface_m"] + 0.02
+            ax.plot([-P.D_OUTLET / 2, -R, -R], [0, h, top], "k-", lw=0.8)
+            ax.plot([P.D_OUTLET / 2, R, R], [0, h, top], "k-", lw=0.8)
+            ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
+            ax.set_title(f"{a} deg, {'at rest' if step == 0 else f't = {step * dt:.2f} s'}\n"
+                         f"mean force {mean * 1e3:.0f} mN", fontsize=8)
+            ax.tick_params(labelsize=7)
+    fig.colorbar(lc, ax=axes.ravel().tolist(), fraction=0.02, pad=0.01, label="contact force / mean (stronger than the mean)")
+    fig.suptitle("Force chains (slice |y| < d, first run of each angle)", fontsize=9)
+    gc.plots.save(fig, os.path.join(out, "force_chains.png"), dpi=130)

@@ -51,6 +51,8 @@ ANGLES_DEG = (5, 10, 15, 20, 27, 35)   # hopper wall from the horizontal (5 ~ fl
 # Control volume of the strain invariants: the cylinder over the outlet, its radius
 # and its height the outlet's.
 CV_RADIUS, CV_HEIGHT = D_OUTLET / 2, D_OUTLET
+CG_WIDTH, CG_SPACING = 0.005, 0.005   # m: granairCG's Gaussian kernel (std 4.8 mm) and grid over the control volume
+CV_MARGIN = 0.025          # the grains dumped around it: 10 ms of travel, the CG kernel's cutoff (3 x 5 mm) and more
 STRESS_TOP = 0.50          # the shaft's stress-tracked mesh ends here; above it a plain wall to the box top
 RING_HEIGHT = 0.010        # wall mesh rows in the shaft [m] (~1.4 d_50)
 HOPPER_ROWS = 5            # rows along the hopper wall
@@ -72,6 +74,7 @@ FULL_EVERY = 0.5           # s, every grain (post/full_*.dump: the layers pictur
 CHUNK = 0.25               # s of discharge per LIGGGHTS process (a restart after each)
 STEADY_FROM = 0.5          # s, start of the steady window of the discharge
 LAYER = 0.03               # m, thickness of the coloured layers of the flow-pattern picture
+STAGNANT_MASS_FLOW = 0.005 # mass flow if less of the fill than this has moved less than d/2 by the end
 BEVERLOO_C, K_RANGE = 0.58, (1.0, 3.0)
 
 # --- sizes of the study ------------------------------------------------------------------

@@ -10,6 +10,7 @@ import numpy as np
 import granair_cases as gc
 import figures
 import parameters as P
+import cg_strain
 import strain
 import walls
 
@@ -25,8 +26,9 @@ SCALARS = ("steady_mass_flow_kg_s", "bulk_density_kg_m3", "fill_surface_m",
            "hopper_peak_normal_Pa", "shaft_peak_normal_Pa", "hopper_peak_shear_Pa", "shaft_peak_shear_Pa",
            "shaft_pressure_at_janssen_depth_Pa", "shaft_static_over_janssen_mid", "K_eff", "mu_mobilised",
            "fill_walls_over_weight",
-           "I1_mean", "J2_mean", "I1_sd_time", "J2_sd_time", "cv_grains_mean",
-           "descent_wall_over_core", "stagnant_mass_fraction", "cpu_s")
+           "I1_mean", "J2_mean", "I1_sd_time", "J2_sd_time", "cv_grains_mean", "I1_of_mean", "J2_of_mean",
+           "cg_I1", "cg_J2",
+           "descent_wall_over_core", "stagnant_mass_fraction", "dead_zone_wall_height_m", "cpu_s")
 
 
 def read_flow(paths):
@@ -66,10 +68,11 @@ def fill_state(fill, h):
 
 
 def pattern(fill, final, surface, h):
-    """Flow-pattern measures from the grains' descent between the fill and the end:
+    """Flow-pattern measures from the grains' motion between the fill and the end:
     (mean descent of the wall zone over the core's in the lowest third of the shaft
-    fill, stagnant mass fraction). Wall zone: r > R - 2 d; core: r < 2 d; a grain
-    that has left counts as descended to the sink; stagnant: moved less than d/2."""
+    fill, stagnant mass fraction, height of the highest stagnant grain at the wall).
+    Wall zone: r > R - 2 d; core: r < 2 d; a grain that has left counts as descended
+    to the sink; stagnant: moved less than d/2."""
     d, R = P.d_mass_mean(), P.D_SILO / 2
     where = {int(i): k for k, i in enumerate(final["id"])}
     idx = np.array([where.get(int(i), -1) for i in fill["id"]])
@@ -85,7 +88,9 @@ def pattern(fill, final, surface, h):
         descent[core].mean() > 0 else math.nan
     moved = np.sqrt((xf - fill["x"]) ** 2 + (yf - fill["y"]) ** 2 + descent ** 2)
     stagnant = ~gone & (moved < d / 2)
-    return ratio, float(fill["mass"][stagnant].sum() / fill["mass"].sum())
+    at_wall = stagnant & (r0 > R - 2 * d)
+    return (ratio, float(fill["mass"][stagnant].sum() / fill["mass"].sum()),
+            float(fill["z"][at_wall].max()) if at_wall.any() else 0.0)
 
 
 def run(name, run_dir, v, state, out):
@@ -195,7 +200,13 @@ def run(name, run_dir, v, state, out):
                J2_sd_time=float(ss_[:, 6].std()) if len(ss_) else math.nan,
                cv_grains_mean=float(ss_[:, 2].mean()) if len(ss_) else math.nan,
                cv_grains_lost=int(st[:, 3].sum()) if len(st) else 0)
-    res["descent_wall_over_core"], res["stagnant_mass_fraction"] = pattern(fill, final, surface, h)
+    # the same from the CG velocity field (granairCG), beside the hull's of the time-mean strain
+    res["I1_of_mean"], res["J2_of_mean"] = cg_strain.hull_mean(rows, res["steady_from_s"], dt)
+    cg = cg_strain.run(run_dir, v, res["steady_from_s"], float(t[-1]))
+    res.update(cg_I1=cg[0] if cg else math.nan, cg_J2=cg[1] if cg else math.nan, cg_points=cg[3] if cg else 0,
+               cg_width_m=P.CG_WIDTH)
+    res["descent_wall_over_core"], res["stagnant_mass_fraction"], res["dead_zone_wall_height_m"] = \
+        pattern(fill, final, surface, h)
 
     gc.series.write_rows(os.path.join(adir, f"s{k}_walls.csv"),
                          [dict(wall="hopper" if rings.is_hopper[i] else "shaft", z_m=rings.z[i],
@@ -228,7 +239,8 @@ def angle(out, a, runs, seeds, size, run_root):
     res = dict(angle_deg=a, runs=len(runs), runs_planned=seeds, grains=size["grains"])
     for key in SCALARS:
         res[key], res[key + "_sd"] = mean_sd([r.get(key) for r in runs])
-    res["pattern"] = "mass flow" if res["stagnant_mass_fraction"] < 0.01 else "funnel flow"
+    # mass flow: every grain moves once any is withdrawn (Jenike); funnel flow leaves grains at rest
+    res["pattern"] = "mass flow" if res["stagnant_mass_fraction"] < P.STAGNANT_MASS_FLOW else "funnel flow"
     flows = [gc.series.read_csv(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_mass_flow.csv")) for r in runs]
     n = min(len(f["t"]) for f in flows)
     gc.series.write_csv(os.path.join(adir, "mass_flow.csv"),

@@ -66,8 +66,8 @@ def numbers(grains, discharge, angle, k, youngs):
              INSERT_FRACTION=P.INSERT_FRACTION, HOPPER_HEIGHT=h, SINK_Z=P.SINK_Z,
              SETTLE_RMS=P.SETTLE_RMS, SETTLE_MIN=P.SETTLE_MIN, SETTLE_MAX=P.SETTLE_MAX, CHUNK_STEPS=fill_chunk,
              N_MIN=math.ceil(P.SETTLE_MIN / (fill_chunk * dt)), N_MAX=math.ceil(P.SETTLE_MAX / (fill_chunk * dt)),
-             CV_RADIUS=P.CV_RADIUS, CV_HEIGHT=P.CV_HEIGHT, CV_DUMP_RADIUS=P.CV_RADIUS + 0.02, CV_DUMP_LO=-0.04,
-             CV_DUMP_HI=P.CV_HEIGHT + 0.02, CV_STEPS=cv, FLOW_STEPS=per(P.FLOW_EVERY), WALL_STEPS=per(P.WALL_EVERY),
+             CV_RADIUS=P.CV_RADIUS, CV_HEIGHT=P.CV_HEIGHT, CV_DUMP_RADIUS=P.CV_RADIUS + P.CV_MARGIN, CV_DUMP_LO=-P.CV_MARGIN,
+             CV_DUMP_HI=P.CV_HEIGHT + P.CV_MARGIN, CV_STEPS=cv, FLOW_STEPS=per(P.FLOW_EVERY), WALL_STEPS=per(P.WALL_EVERY),
              FULL_STEPS=per(P.FULL_EVERY), THERMO_STEPS=per(0.05), CHUNK=P.CHUNK, DISCHARGE_CHUNK_STEPS=per(P.CHUNK),
              DISCHARGE_STEPS=per(discharge), DISCHARGE_S=per(discharge) * dt)
     for i, (r, w) in enumerate(zip(radii, P.MASS_FRACTIONS), 1):
@@ -196,7 +196,7 @@ def simulate(name, run, v):
 
 def post_step(filename):
     """The step in the name of an output file written every so many steps (walls_N.vtk, full_N.dump)."""
-    for prefix, suffix in (("walls_", ".vtk"), ("full_", ".dump")):
+    for prefix, suffix in (("walls_", ".vtk"), ("full_", ".dump"), ("pairs_", ".dump")):
         if filename.startswith(prefix) and filename.endswith(suffix):
             try:
                 return int(filename[len(prefix):-len(suffix)])
