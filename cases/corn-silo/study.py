@@ -39,7 +39,7 @@ import parameters as P
 import post
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-OUTS = {"study": "results", "demo": "results-demo", "test": "results-test"}
+OUTS = {"study": "results", "full": "results-full", "demo": "results-demo", "test": "results-test"}
 
 
 def numbers(grains, discharge, angle, k, youngs):
@@ -226,8 +226,8 @@ def one(name, run, v, a, out):
 def main():
     ap = gc.cli.parser(__doc__, out_help="results (default: results/, results-demo/ or results-test/ by --size)")
     ap.add_argument("--size", choices=sorted(P.SIZES), default="study",
-                    help="study: 25 000 grains, 3 s, 6 angles x 3 runs; demo: 8000 grains, 1 s, 10 and 35 deg; "
-                         "test: 4000 grains, 0.2 s, 27 deg")
+                    help="study: 8000 grains, 0.75 s, 6 angles x 3 runs; full: 25 000 grains, 3 s, 6 angles x 3 runs; "
+                         "demo: 8000 grains, 1 s, 10 and 35 deg; test: 8000 grains, 0.2 s, 27 deg")
     ap.add_argument("--angles", type=float, nargs="+", help="hopper angles [deg from the horizontal] (default: the size's)")
     ap.add_argument("--seeds", type=int, help=f"runs per angle, 1-{len(P.SEEDS)} (default: the size's)")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time, one rank each (default 2)")
@@ -247,8 +247,8 @@ def main():
     print(f"corn-silo: {size['grains']} grains, {discharge:g} s of discharge, angles {', '.join(map(str, angles))} deg, "
           f"{seeds} run(s) each, E = {a.youngs:.3g} Pa, {a.jobs} at a time, results in {a.out}", flush=True)
     tasks = []
-    for angle in angles:
-        for k in range(seeds):
+    for k in range(seeds):          # seed-major: a study stopped early still has every angle
+        for angle in angles:
             name = f"a{angle}-s{k + 1}"
             v = numbers(size["grains"], discharge, angle, k, a.youngs)
             run = os.path.join(a.out, "runs", name)
