@@ -53,7 +53,7 @@ def wall_loads(plt, out, angles, means):
                                           ("shaft", "normal", "shaft wall pressure"),
                                           ("shaft", "shear", "shaft wall shear stress"))):
         for state, style in (("static", dict(color="tab:blue")), ("discharge", dict(color="tab:red"))):
-            lab = "fill at rest" if state == "static" else f"discharge (mean over t >= {P.STEADY_FROM:g} s)"
+            lab = "fill at rest" if state == "static" else f"discharge (mean over t >= {means[0]['steady_from_s']:.2g} s)"
             _err(axes[row][0], angles, means, f"{wall}_{state}_{q}_max_Pa", lab, **style)
             _err(axes[row][1], angles, means, f"{wall}_{state}_{q}_max_z_m", lab, **style)
         _err(axes[row][0], angles, means, f"{wall}_peak_{q}_Pa", "discharge, largest instant", color="tab:red",
@@ -87,7 +87,7 @@ def profiles(plt, out, angles, means):
         ax.fill_betweenx(z, lo, hi, color="0.8", label=f"Janssen, K = {P.K_JANSSEN[0]:.2f}-{P.K_JANSSEN[1]:.2f}, "
                          f"mu_w = {P.MU_PW}")
     axes[0].set(xlabel="wall pressure at rest [Pa]", ylabel="height above the outlet [m]", title="fill at rest")
-    axes[1].set(xlabel="wall pressure [Pa]", title=f"discharge, mean over t >= {P.STEADY_FROM:g} s")
+    axes[1].set(xlabel="wall pressure [Pa]", title=f"discharge, mean over t >= {means[0]['steady_from_s']:.2g} s")
     axes[2].set(xlabel="wall shear stress [Pa]", title="discharge, mean")
     for ax in axes:
         ax.set_xlim(0, None)
@@ -114,7 +114,7 @@ def strain(plt, out, angles, means):
         ax.axhline(0, color="0.5", lw=0.6)
         ax.grid(alpha=0.3)
     fig.suptitle(f"Strain over the outlet (cylinder r = {P.CV_RADIUS * 1e3:.0f} mm, h = {P.CV_HEIGHT * 1e3:.0f} mm), "
-                 f"convex-hull method; mean over t >= {P.STEADY_FROM:g} s, +- SD of the runs", fontsize=9)
+                 f"convex-hull method; mean over t >= {means[0]['steady_from_s']:.2g} s, +- SD of the runs", fontsize=9)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(out, "strain_invariants.png"))
 

@@ -95,7 +95,13 @@ SEEDS = ((86028121, 122949823), (104395301, 141650939), (160481183, 179424673)) 
 # mu_w = the corn-wall friction coefficient (fully mobilised, as Janssen assumes).
 PHI = math.radians(REPOSE_DEG)
 K_JANSSEN = ((1 - math.sin(PHI)) / (1 + math.sin(PHI)), 1.1 * (1 - math.sin(PHI)))
-JANSSEN_DEPTH = 0.25       # m below the free surface: the compared shaft pressure (study size)
+
+
+def janssen_depth(grains):
+    """Depth below the free surface of the compared shaft wall pressure [m]: in the
+    shaft's fill below its top rings, above the hopper of every angle (8000 grains
+    stand ~0.14 m high, 25 000 ~0.41 m)."""
+    return 0.25 if grains >= 25000 else 0.08
 
 
 def number_fractions():

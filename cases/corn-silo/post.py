@@ -28,7 +28,7 @@ SCALARS = ("steady_mass_flow_kg_s", "bulk_density_kg_m3", "fill_surface_m",
            "fill_walls_over_weight",
            "I1_mean", "J2_mean", "I1_sd_time", "J2_sd_time", "cv_grains_mean", "I1_of_mean", "J2_of_mean",
            "cg_I1", "cg_J2",
-           "descent_wall_over_core", "stagnant_mass_fraction", "dead_zone_wall_height_m", "cpu_s")
+           "descent_wall_over_core", "stagnant_mass_fraction", "dead_zone_wall_height_m", "cpu_s", "steady_from_s")
 
 
 def read_flow(paths):
@@ -181,7 +181,7 @@ def run(name, run_dir, v, state, out):
                shaft_static_over_janssen_mid=float(meas[shaft].mean() / mid[shaft].mean()) if shaft.any() else math.nan)
     sel = ~rings.is_hopper
     order = np.argsort(depth[sel])
-    res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(P.JANSSEN_DEPTH, depth[sel][order], meas[sel][order],
+    res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(P.janssen_depth(v["GRAINS"]), depth[sel][order], meas[sel][order],
                                                                 left=math.nan, right=math.nan))
 
     # strain invariants over the outlet
@@ -265,7 +265,7 @@ def angle(out, a, runs, seeds, size, run_root):
                     steady_window_s=[runs[0]["steady_from_s"], runs[0]["discharge_s"]], outlet_dpdz_Pa_m=None,
                     wall_time_s=round(res["wall_time_s"], 1), cores=1, timeseries="mass_flow.csv",
                     hopper_angle_deg=a, shaft_wall_pressure_Pa=res["shaft_pressure_at_janssen_depth_Pa"],
-                    shaft_wall_pressure_depth_m=P.JANSSEN_DEPTH)
+                    shaft_wall_pressure_depth_m=P.janssen_depth(size["grains"]))
     # the mean wall loads per element, on the first run's mesh, for ParaView
     first = os.path.join(run_root, runs[0]["run"], "post", "walls_fill.vtk")
     if os.path.exists(first):
@@ -322,7 +322,7 @@ def study(out, done, angles, seeds, size, c):
     rows = [m for m, _ in by_angle.values()]
     gc.series.write_rows(os.path.join(out, "summary.csv"), rows, fmt="{:.6g}")
     figures.all(out, by_angle, run_root)
-    table(out, rows)
+    table(out, rows, P.janssen_depth(size["grains"]))
 
 
 def check_run(c, r):
@@ -342,14 +342,14 @@ def check_run(c, r):
              f"{r['K_eff']:.2f}, mu mobilised {r['mu_mobilised']:.2f}: README 'Janssen'", " Pa")
 
 
-def table(out, rows):
+def table(out, rows, depth):
     """summary.md: the results against the angle, mean +- SD of the runs."""
     def f(r, key, scale=1.0, digits=3):
         m, s = r[key] * scale, r[key + "_sd"] * scale
         return f"{m:.{digits}g}" + (f" ± {s:.2g}" if math.isfinite(s) else "")
     head = ["angle [deg]", "runs", "W [kg/s]", "hopper p max static / discharge [Pa]", "hopper tau max static / discharge [Pa]",
             "shaft p max static / discharge [Pa]", "shaft tau max static / discharge [Pa]",
-            f"shaft p at {P.JANSSEN_DEPTH:g} m [Pa]", "I1 (per 0.01 s)", "J2 (per 0.01 s)", "wall/core descent",
+            f"shaft p at {depth:g} m [Pa]", "I1 (per 0.01 s)", "J2 (per 0.01 s)", "wall/core descent",
             "stagnant mass", "pattern"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in rows:
