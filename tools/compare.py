@@ -4,7 +4,8 @@
     ./granair compare CASE_DIR [--b MM] [--run LEVEL ...|all] [--from DIR ...] [--out DIR]
 
 Levels (docs/fidelity-levels.md): closed-form (Beverloo / Hagen-Beverloo and
-Carleton's air-impeded estimate, computed here), continuum
+Carleton's air-impeded estimate, computed here; Janssen's shaft wall pressure
+for a case whose compare.json has a `janssen` block), continuum
 (granairContinuumFoam), cg-dem and cg-dem-cfd (coarse-grained DEM without and
 with air, granairFoam), dem-cfd (unscaled particles, where it was run).
 
@@ -83,6 +84,14 @@ def load_spec(case_dir):
         raise CompareError(f"{path}: key 'beverloo.k' must be [k_min, k_max], got {k!r}")
     need(spec, "b_mm", "", list)
     need(spec, "results", "", list)
+    if "janssen" in spec:                  # the shaft wall pressure at rest (cases/corn-silo)
+        jan = need(spec, "janssen", "", dict)
+        for key in ("D_m", "mu_w", "rho_b", "depth_m"):
+            if not need(jan, key, "janssen.", num) > 0:
+                raise CompareError(f"{path}: key 'janssen.{key}' must be > 0, got {jan[key]}")
+        kk = need(jan, "K", "janssen.", list)
+        if len(kk) != 2 or not all(isinstance(x, num) and x > 0 for x in kk):
+            raise CompareError(f"{path}: key 'janssen.K' must be [K_min, K_max] > 0, got {kk!r}")
     for i, r in enumerate(spec.get("runs", [])):
         need(r, "levels", f"runs[{i}].", list)
         need(r, "command", f"runs[{i}].", str)
@@ -144,6 +153,15 @@ def closed_form_rows(spec, b_mm):
              dict(level="closed-form", model=f"{name} x Carleton (1972) air drag: x{ratio:.3f}", air=True,
                   steady_mass_flow_kg_s=mid * ratio, outlet_dpdz_Pa_m=None, wall_time_s=wall, cores=1,
                   source="compare.json")]
+    if "janssen" in spec:
+        j = spec["janssen"]
+        p = [float(cf.janssen(j["depth_m"], j["D_m"], j["rho_b"], j["mu_w"], k)[1]) for k in sorted(j["K"])]
+        p_mid = float(cf.janssen(j["depth_m"], j["D_m"], j["rho_b"], j["mu_w"], sum(j["K"]) / 2)[1])
+        rows.append(dict(level="closed-form", air=False, steady_mass_flow_kg_s=None, outlet_dpdz_Pa_m=None,
+                         model=f"Janssen (1895), shaft wall pressure at rest {j['depth_m']:g} m below the surface, "
+                               f"D = {j['D_m']:g} m, mu_w = {j['mu_w']:g}, K = {min(j['K']):.3g}..{max(j['K']):.3g}: "
+                               f"band {p[0]:.4g}..{p[1]:.4g} Pa", shaft_wall_pressure_Pa=p_mid,
+                         wall_time_s=wall, cores=1, source="compare.json"))
     return rows, (lo, hi), ratio
 
 
@@ -177,17 +195,20 @@ def fmt(v, spec="{:.4g}"):
     return spec.format(v)
 
 
-def table(rows, band):
+def table(rows, band, shaft=False):
+    """The table's header and rows; shaft: a column of the shaft wall pressure
+    (cases with a `janssen` block), before the source."""
     mid = 0.5 * (band[0] + band[1])
     head = ["level", "model", "air", "steady mass flow [kg/s]", "outlet dp/dz [Pa/m]", "wall time [s]",
-            "cores", "W / Beverloo middle", "Crewdson check [kg/s]", "source"]
+            "cores", "W / Beverloo middle", "Crewdson check [kg/s]"] + \
+        (["shaft wall pressure [Pa]"] if shaft else []) + ["source"]
     body = []
     for r in rows:
         w = r.get("steady_mass_flow_kg_s")
         body.append([r["level"], r["model"], "yes" if r["air"] else "no", fmt(w), fmt(r.get("outlet_dpdz_Pa_m")),
                      fmt(r.get("wall_time_s"), "{:.3g}"), fmt(r.get("cores"), "{}"),
-                     fmt(None if w is None else w / mid, "{:.2f}"), fmt(r.get("crewdson_kg_s")),
-                     r.get("source", "")])
+                     fmt(None if w is None else w / mid, "{:.2f}"), fmt(r.get("crewdson_kg_s"))] +
+                    ([fmt(r.get("shaft_wall_pressure_Pa"))] if shaft else []) + [r.get("source", "")])
     return head, body
 
 
@@ -364,7 +385,8 @@ def main(argv=None):
                          steady_mass_flow_kg_s=lv["steady_mass_flow_kg_s"],
                          outlet_dpdz_Pa_m=lv["outlet_dpdz_Pa_m"] if lv["air"] else None,
                          wall_time_s=lv["wall_time_s"], cores=lv["cores"],
-                         group=group_of(lv), mesh_study=lv.get("mesh_study"),
+                         shaft_wall_pressure_Pa=lv.get("shaft_wall_pressure_Pa"), group=group_of(lv),
+                         mesh_study=lv.get("mesh_study"),
                          source=os.path.relpath(lv["_dir"], case_dir), series=series))
     add_crewdson(rows, spec["rho_b"])
     rows.sort(key=lambda r: (LEVELS.index(r["level"]), r["air"], r.get("source", "")))
@@ -378,19 +400,23 @@ def main(argv=None):
         how = f"run it: `./granair compare {os.path.relpath(case_dir)} --b {b_mm:g} --run {lv}`" if cmd else ""
         missing.append((lv, " ".join(x for x in (why or "no results found;", how) if x)))
 
-    head, body = table(rows, band)
+    shaft = "janssen" in spec
+    head, body = table(rows, band, shaft)
     with open(os.path.join(out, "compare.csv"), "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow(["level", "model", "air", "steady_mass_flow_kg_s", "outlet_dpdz_Pa_m", "wall_time_s",
-                    "cores", "w_over_beverloo_middle", "crewdson_kg_s", "source", "gci_fine"])
+        csv_head = (["level", "model", "air", "steady_mass_flow_kg_s", "outlet_dpdz_Pa_m", "wall_time_s",
+                     "cores", "w_over_beverloo_middle", "crewdson_kg_s"] +
+                    (["shaft_wall_pressure_Pa"] if shaft else []) + ["source", "gci_fine"])
+        w.writerow(csv_head)
         for r, line in zip(rows, body):
             w.writerow([r["level"], r["model"], int(r["air"]), r["steady_mass_flow_kg_s"],
                         "" if r.get("outlet_dpdz_Pa_m") is None else r["outlet_dpdz_Pa_m"],
                         r["wall_time_s"], r["cores"], line[7] if line[7] != "-" else "",
-                        r.get("crewdson_kg_s", ""), r.get("source", ""),
-                        (r.get("mesh_study") or {}).get("gci_fine", "")])
+                        r.get("crewdson_kg_s", "")] +
+                       ([r.get("shaft_wall_pressure_Pa", "")] if shaft else []) +
+                       [r.get("source", ""), (r.get("mesh_study") or {}).get("gci_fine", "")])
         for lv, why in missing:
-            w.writerow([lv, why, "", "", "", "", "", "", "", "", ""])
+            w.writerow([lv, why] + [""] * (len(csv_head) - 2))
     title = f"{spec['case']}, {'slot' if spec['orifice'] == 'slot' else 'orifice'} b = {b_mm:g} mm"
     lines = [f"# Fidelity levels: {title}", "",
              f"Written by `./granair compare` from {os.path.relpath(spec['_path'])} and the runs' level.json files "
@@ -398,7 +424,9 @@ def main(argv=None):
              f"Steady mass flow for the whole {'silo (full depth)' if spec['orifice'] == 'slot' else 'hopper'}; "
              f"outlet dp/dz is the mean air pressure gradient at the orifice over the steady window (z up: "
              f"negative = suction). Crewdson check: W(dry, same level) x sqrt(1 + (dp/dz)/(rho_b g)) with "
-             f"rho_b = {spec['rho_b']:g} kg/m3. Closed forms: tools/granair_cases/closed_forms.py.", "",
+             f"rho_b = {spec['rho_b']:g} kg/m3. Closed forms: tools/granair_cases/closed_forms.py." +
+             (f" Shaft wall pressure: the fill at rest, {spec['janssen']['depth_m']:g} m below its surface "
+              f"(Janssen: the middle of the K band)." if shaft else ""), "",
              "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     lines += ["| " + " | ".join(str(x) for x in line) + " |" for line in body]
     studies = [r for r in rows if r.get("mesh_study")]

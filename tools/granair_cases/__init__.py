@@ -5,10 +5,10 @@
     template    the one template mechanism: a case's template/ with @KEY@ placeholders
     runner      run a step (log, mpirun, CPU time), a job pool, stop a run on a condition
     chunks      long granairFoam runs in chunks from restart points, resumable, until finished
-    dem         LIGGGHTS: loose packing, data files, STL walls, dumps, the discharge balance
+    dem         LIGGGHTS: loose packing, data files, STL walls, dumps, mesh VTK, the discharge balance
     series      time series: CSV in and out, window means, steady rates
     powder      the discharge of a silo or hopper: DEM and continuum runs to the level contract
-    closed_forms  Beverloo, Hagen-Beverloo, Crewdson, Carleton
+    closed_forms  Beverloo, Hagen-Beverloo, Crewdson, Carleton, Ergun, Wen & Yu, Janssen
     gci         Roache's grid convergence index of a result on three meshes
     levels      level.json, the contract of `./granair compare` (docs/fidelity-levels.md)
     checks      a case's --check: named assertions with tolerances and reasons

@@ -1,4 +1,4 @@
-"""closed_forms.py: the closed-form discharge estimates every fidelity level is
+"""closed_forms.py: the closed-form estimates (discharge, wall pressure) every fidelity level is
 compared with (used by tools/compare.py and the case studies,
 so the numbers in a case's summary and in the comparison table are the same).
 
@@ -30,8 +30,16 @@ All SI: lengths m, densities kg/m3, viscosity Pa s, mass flow kg/s, z up.
       -dp/dz = 150 mu U_s (1-eps)^2 / (eps^3 d^2) + 1.75 rho U_s^2 (1-eps) / (eps^3 d).
 - Wen & Yu (1966), AIChE J. 12(3), 610: minimum fluidisation,
       Re_mf = sqrt(33.7^2 + 0.0408 Ar) - 33.7, Ar = rho_f (rho_p - rho_f) g d^3 / mu^2.
+- Janssen (1895), Z. Ver. Dtsch. Ing. 39, 1045 (Nedderman 1992, ch. 3): the
+  stresses at depth h below the free surface of a bulk solid at rest in a
+  vertical cylinder of diameter D, wall friction mu_w, ratio K of horizontal to
+  vertical stress (the differential slice with the wall friction fully mobilised),
+      p_v = rho_b g D / (4 mu_w K) (1 - exp(-4 mu_w K h / D)),   p_w = K p_v,
+  the wall shear stress mu_w p_w; p_w tends to rho_b g D / (4 mu_w) far below the surface.
 """
 import math
+
+import numpy as np
 
 G = 9.81
 
@@ -100,3 +108,11 @@ def wen_yu_umf(d, rho_p, rho_f, mu, g=G):
     """Minimum fluidisation velocity [m/s] of Wen & Yu (1966)."""
     re_mf = math.sqrt(33.7 ** 2 + 0.0408 * archimedes(d, rho_p, rho_f, mu, g)) - 33.7
     return re_mf * mu / (rho_f * d)
+
+
+def janssen(depth, D, rho_b, mu_w, K, g=G):
+    """Janssen's (vertical stress, wall pressure) [Pa] at `depth` [m] below the free
+    surface of a cylinder of diameter D; depth may be a numpy array."""
+    z0 = D / (4.0 * mu_w * K)
+    p_v = rho_b * g * z0 * (1.0 - np.exp(-np.asarray(depth, dtype=float) / z0))
+    return p_v, K * p_v

@@ -4,11 +4,15 @@
     time_steps(cfd_dt, t_rayleigh, f)   (coupling interval, DEM dt <= f x Rayleigh time)
     loose_packing(...)                  random sequential addition of spheres in a region
     write_data(path, atoms, box, rho)   a LIGGGHTS read_data file of those spheres
-    stl(name, quads)                    a triangulated wall (mesh/surface) from quadrilaterals
+    stl(name, quads)                    a triangulated wall (mesh/surface) from quadrilaterals (or triangles)
     read_dump(path)                     a `custom` dump as columns
+    read_dumps(path)                    every snapshot of a `custom` dump file: [(step, columns)]
+    read_mesh_vtk(path)                 a `dump mesh/vtk` file: points, triangles, per-element fields
+    write_mesh_vtk(path, ...)           triangles with per-element fields as legacy VTK (ParaView)
     discharge_balance(log)              the particle accounting granairFoam prints at the end
 """
 import math
+import os
 import re
 
 import numpy as np
@@ -101,11 +105,11 @@ def write_data(path, atoms, box, rho, title, types=None):
 
 
 def stl(name, quads):
-    """ASCII STL of quadrilaterals (each 4 points in order), two triangles each;
-    normals left to LIGGGHTS."""
+    """ASCII STL of quadrilaterals (each 4 points in order), two triangles each, or
+    of triangles (3 points, e.g. the fan of a disk); normals left to LIGGGHTS."""
     lines = [f"solid {name}"]
     for q in quads:
-        for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+        for tri in ((q[0], q[1], q[2]),) if len(q) == 3 else ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
             lines.append("  facet normal 0 0 0\n    outer loop")
             lines += ["      vertex %.12g %.12g %.12g" % v for v in tri]
             lines.append("    endloop\n  endfacet")
@@ -126,6 +130,104 @@ def read_dump(path):
     # reshaped: a snapshot of one particle or none (an emptied silo) keeps its columns
     data = np.array([[float(v) for v in line.split()] for line in lines[i + 1:] if line.strip()]).reshape(-1, len(cols))
     return {c: data[:, k] for k, c in enumerate(cols)}
+
+
+def read_dumps(path):
+    """Every snapshot of a LIGGGHTS `custom` (or `local`) dump file (one file, many
+    steps, as `dump_modify append yes` writes it): [(step, {column: numpy array})],
+    the columns named as in its ITEM: ATOMS (ENTRIES) line; an empty snapshot has
+    arrays of length 0."""
+    with open(path) as fh:
+        lines = fh.read().splitlines()
+    out, i = [], 0
+    while i < len(lines):
+        if not lines[i].startswith("ITEM: TIMESTEP"):
+            i += 1
+            continue
+        step, n = int(lines[i + 1]), int(lines[i + 3])
+        j = next((k for k in range(i + 4, len(lines)) if lines[k].startswith(("ITEM: ATOMS", "ITEM: ENTRIES"))), None)
+        cols = lines[j].split()[2:] if j is not None else []
+        rows = [line.split() for line in lines[j + 1:j + 1 + n]] if j is not None else []
+        if j is None or len(rows) < n or any(len(r) != len(cols) for r in rows):
+            break                       # a snapshot cut short (a run killed while writing)
+        data = np.array(rows, dtype=float).reshape(n, len(cols))
+        out.append((step, {c: data[:, k] for k, c in enumerate(cols)}))
+        i = j + 1 + n
+    return out
+
+
+def read_mesh_vtk(path):
+    """A legacy ASCII VTK polydata file of `dump mesh/vtk` (LIGGGHTS 3.8 writes the
+    OFFSETS/CONNECTIVITY form of VTK 5.1; the older per-cell lists are read too):
+    {"points": (n, 3), "cells": [index arrays], "fields": {name: per-element array}}."""
+    with open(path) as fh:
+        tok = fh.read().split()
+    try:
+        k = tok.index("POINTS")
+    except ValueError:
+        raise CaseError(f"{path}: no POINTS (not a VTK polydata file)")
+    n = int(tok[k + 1])
+    points = np.array(tok[k + 3:k + 3 + 3 * n], dtype=float).reshape(n, 3)
+    k = tok.index("POLYGONS", k)
+    ncell, size = int(tok[k + 1]), int(tok[k + 2])
+    k += 3
+    if tok[k] == "OFFSETS":
+        off = np.array(tok[k + 2:k + 2 + ncell], dtype=int)
+        k += 2 + ncell
+        if tok[k] != "CONNECTIVITY":
+            raise CaseError(f"{path}: OFFSETS not followed by CONNECTIVITY")
+        conn = np.array(tok[k + 2:k + 2 + size], dtype=int)
+        k += 2 + size
+        cells = [conn[off[c]:off[c + 1]] for c in range(ncell - 1)]
+    else:
+        cells = []
+        for _ in range(ncell):
+            m = int(tok[k])
+            cells.append(np.array(tok[k + 1:k + 1 + m], dtype=int))
+            k += 1 + m
+    fields = {}
+    if "CELL_DATA" in tok[k:]:
+        k = tok.index("CELL_DATA", k)
+        nc = int(tok[k + 1])
+        k += 2
+        while k < len(tok) and tok[k] != "POINT_DATA":
+            if tok[k] == "FIELD":
+                narr, k = int(tok[k + 2]), k + 3
+                for _ in range(narr):
+                    name, ncomp, ntup = tok[k], int(tok[k + 1]), int(tok[k + 2])
+                    vals = np.array(tok[k + 4:k + 4 + ncomp * ntup], dtype=float)
+                    fields[name] = vals if ncomp == 1 else vals.reshape(ntup, ncomp)
+                    k += 4 + ncomp * ntup
+            elif tok[k] == "SCALARS":
+                name, k = tok[k + 1], k + 3 + (tok[k + 3] != "LOOKUP_TABLE")
+                k += 2 if tok[k] == "LOOKUP_TABLE" else 0
+                fields[name] = np.array(tok[k:k + nc], dtype=float)
+                k += nc
+            else:
+                k += 1
+    return {"points": points, "cells": cells, "fields": fields}
+
+
+def write_mesh_vtk(path, points, triangles, fields, title="granair wall loads"):
+    """Triangles (indices into points) with per-element scalar fields {name: values}
+    as a legacy ASCII VTK polydata file (ParaView, VisIt)."""
+    points, triangles = np.asarray(points, dtype=float), np.asarray(triangles, dtype=int)
+    lines = ["# vtk DataFile Version 3.0", title[:255], "ASCII", "DATASET POLYDATA",
+             f"POINTS {len(points)} double"]
+    lines += ["%.9g %.9g %.9g" % tuple(p) for p in points]
+    lines.append(f"POLYGONS {len(triangles)} {4 * len(triangles)}")
+    lines += ["3 %d %d %d" % tuple(t) for t in triangles]
+    lines.append(f"CELL_DATA {len(triangles)}")
+    for name, vals in fields.items():
+        vals = np.asarray(vals, dtype=float)
+        if vals.shape != (len(triangles),):
+            raise CaseError(f"{path}: field {name} has {vals.size} values for {len(triangles)} triangles")
+        lines += [f"SCALARS {name} double 1", "LOOKUP_TABLE default"]
+        lines += ["%.9g" % v for v in vals]
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    return path
 
 
 BALANCE = (("inserted", "inserted"), ("present", "present"), ("removed", "removed at the sink"),

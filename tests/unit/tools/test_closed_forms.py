@@ -11,6 +11,9 @@ Hand values (computed on paper, 4 significant figures):
   B = 10 mm, theta = 15 deg: sqrt(0.0981 / 1.0353) = 0.3078 m/s.
 - Crewdson: dp/dz = -rho_b g / 2 halves the weight: W = W0 / sqrt(2);
   dp/dz = -rho_b g stops the flow.
+- Janssen, D = 0.15 m, rho_b = 760, mu_w = 0.52, K = 0.5: z0 = D / (4 mu_w K) = 0.14423 m;
+  at 0.2 m depth p_v = 760 x 9.81 x 0.14423 x (1 - exp(-1.3867)) = 806.6 Pa, p_w = 403.3 Pa;
+  far below the surface p_w -> rho_b g D / (4 mu_w) = 537.7 Pa; near it p_w = K rho_b g h.
 """
 import math
 import unittest
@@ -65,6 +68,15 @@ class ClosedForms(unittest.TestCase):
         self.assertAlmostEqual(cf.crewdson(1.0, -600.0 * 9.81 / 2, 600.0), 1 / math.sqrt(2), delta=1e-12)
         self.assertEqual(cf.crewdson(1.0, -600.0 * 9.81 * 1.5, 600.0), 0.0)
         self.assertEqual(cf.crewdson(0.3, 0.0, 600.0), 0.3)
+
+    def test_janssen(self):
+        p_v, p_w = cf.janssen(0.2, 0.15, 760.0, 0.52, 0.5)
+        self.assertAlmostEqual(p_v, 806.6, delta=0.05)
+        self.assertAlmostEqual(p_w, 403.3, delta=0.05)
+        self.assertAlmostEqual(float(cf.janssen(50.0, 0.15, 760.0, 0.52, 0.5)[1]), 537.7, delta=0.05)
+        _, near = cf.janssen(1e-4, 0.15, 760.0, 0.52, 0.5)
+        self.assertAlmostEqual(float(near) / (0.5 * 760 * 9.81 * 1e-4), 1.0, delta=1e-3)
+        self.assertEqual(cf.janssen([0.1, 0.2], 0.15, 760.0, 0.52, 0.5)[1].shape, (2,))
 
 
 if __name__ == "__main__":

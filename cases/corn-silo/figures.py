@@ -1,0 +1,200 @@
+"""The corn silo's figures (post.study): mass flow with the Beverloo band, wall
+loads (maximum and where) against the angle, wall-load profiles with Janssen's
+band, strain invariants against the angle, the flow pattern as coloured layers."""
+import glob
+import math
+import os
+
+import numpy as np
+
+import granair_cases as gc
+import parameters as P
+
+
+def all(out, by_angle, run_root):
+    plt = gc.plots.pyplot()
+    angles = sorted(by_angle)
+    means = [by_angle[a][0] for a in angles]
+    mass_flow(plt, out, angles, means)
+    wall_loads(plt, out, angles, means)
+    profiles(plt, out, angles, means)
+    strain(plt, out, angles, means)
+    layers(plt, out, angles, by_angle, run_root)
+    force_chains(plt, out, angles, by_angle, run_root)
+
+
+def _err(ax, angles, means, key, label, **kw):
+    y = np.array([m[key] for m in means])
+    e = np.array([m[key + "_sd"] for m in means])
+    ax.errorbar(angles, y, yerr=np.where(np.isfinite(e), e, 0.0), capsize=3, marker="o", label=label, **kw)
+
+
+def mass_flow(plt, out, angles, means):
+    fig, ax = plt.subplots(figsize=(7.5, 4.2))
+    rho_b = float(np.nanmean([m["bulk_density_kg_m3"] for m in means]))
+    band = (P.beverloo(P.K_RANGE[1], rho_b), P.beverloo(P.K_RANGE[0], rho_b))
+    ax.axhspan(*band, color="0.85", label=f"Beverloo, d = {P.d_mass_mean() * 1e3:.1f} mm, k = 1..3, "
+               f"rho_b = {rho_b:.0f} kg/m3")
+    for a, m in zip(angles, means):
+        s = gc.series.read_csv(os.path.join(out, f"a{a}", "mass_flow.csv"))
+        ax.plot(s["t"], s["mass_flow_kg_s"], lw=1.2, label=f"{a} deg: W = {m['steady_mass_flow_kg_s']:.3g} kg/s "
+                f"(mean of {m['runs']})")
+    ax.set(xlabel="t [s]", ylabel="mass flow [kg/s] (0.1 s means)", ylim=(0, None),
+           title=f"Corn silo, D = {P.D_SILO * 1e3:.0f} mm, outlet {P.D_OUTLET * 1e3:.0f} mm, {means[0]['grains']} grains")
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    gc.plots.save(fig, os.path.join(out, "mass_flow.png"))
+
+
+def wall_loads(plt, out, angles, means):
+    fig, axes = plt.subplots(4, 2, figsize=(9, 11), sharex=True)
+    for row, (wall, q, name) in enumerate((("hopper", "normal", "hopper wall pressure"),
+                                          ("hopper", "shear", "hopper wall shear stress"),
+                                          ("shaft", "normal", "shaft wall pressure"),
+                                          ("shaft", "shear", "shaft wall shear stress"))):
+        for state, style in (("static", dict(color="tab:blue")), ("discharge", dict(color="tab:red"))):
+            lab = "fill at rest" if state == "static" else f"discharge (mean over t >= {means[0]['steady_from_s']:.2g} s)"
+            _err(axes[row][0], angles, means, f"{wall}_{state}_{q}_max_Pa", lab, **style)
+            _err(axes[row][1], angles, means, f"{wall}_{state}_{q}_max_z_m", lab, **style)
+        _err(axes[row][0], angles, means, f"{wall}_peak_{q}_Pa", "discharge, largest instant", color="tab:red",
+             ls=":", mfc="none")
+        axes[row][0].set_ylabel(f"max {name} [Pa]", fontsize=8)
+        axes[row][1].set_ylabel(f"height of the max [m]", fontsize=8)
+        axes[row][0].set_ylim(0, None)
+    axes[0][0].legend(fontsize=7)
+    for ax in axes[-1]:
+        ax.set_xlabel("hopper angle from the horizontal [deg]")
+    fig.suptitle("Maximum ring-mean wall loads and where (mean +- SD of the runs)", fontsize=10)
+    fig.tight_layout()
+    gc.plots.save(fig, os.path.join(out, "wall_loads.png"))
+
+
+def profiles(plt, out, angles, means):
+    fig, axes = plt.subplots(1, 3, figsize=(12, 5.5), sharey=True)
+    cmap = plt.get_cmap("viridis")
+    for i, (a, m) in enumerate(zip(angles, means)):
+        rows = gc.series.read_table(os.path.join(out, f"a{a}", "walls.csv"))
+        z = np.array([float(r["z_m"]) for r in rows])
+        col = cmap(i / max(1, len(angles) - 1))
+        for ax, key in zip(axes, ("static_normal_Pa", "discharge_normal_Pa", "discharge_shear_Pa")):
+            ax.plot([float(r[key]) for r in rows], z, color=col, lw=1.2, label=f"{a} deg")
+    # Janssen's band for the shaft at rest, from the mean fill of all angles
+    surface = float(np.nanmean([m["fill_surface_m"] for m in means]))
+    rho_b = float(np.nanmean([m["bulk_density_kg_m3"] for m in means]))
+    z = np.linspace(P.hopper_height(max(angles)), surface, 60)
+    lo, hi = (gc.closed_forms.janssen(surface - z, P.D_SILO, rho_b, P.MU_PW, k, P.G)[1] for k in P.K_JANSSEN)
+    for ax in axes[:2]:
+        ax.fill_betweenx(z, lo, hi, color="0.8", label=f"Janssen, K = {P.K_JANSSEN[0]:.2f}-{P.K_JANSSEN[1]:.2f}, "
+                         f"mu_w = {P.MU_PW}")
+    axes[0].set(xlabel="wall pressure at rest [Pa]", ylabel="height above the outlet [m]", title="fill at rest")
+    axes[1].set(xlabel="wall pressure [Pa]", title=f"discharge, mean over t >= {means[0]['steady_from_s']:.2g} s")
+    axes[2].set(xlabel="wall shear stress [Pa]", title="discharge, mean")
+    for ax in axes:
+        ax.set_xlim(0, None)
+        ax.set_ylim(-0.01, max(m["fill_surface_m"] for m in means) + 0.03)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.suptitle("Ring-mean wall loads (hopper below the kink, shaft above; mean of the runs)", fontsize=10)
+    fig.tight_layout()
+    gc.plots.save(fig, os.path.join(out, "wall_profiles.png"))
+
+
+def strain(plt, out, angles, means):
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    for ax, inv in zip(axes, ("I1", "J2")):
+        _err(ax, angles, means, f"{inv}_mean", "convex hull: mean of the 10 ms strains", color="tab:blue")
+        _err(ax, angles, means, f"{inv}_of_mean", "convex hull: of the mean strain", color="tab:blue", ls="--",
+             mfc="none")
+        if any(math.isfinite(m["cg_" + inv]) for m in means):
+            _err(ax, angles, means, f"cg_{inv}", f"CG velocity field (Gauss w = {P.CG_WIDTH * 1e3:.0f} mm): "
+                 "of the mean strain rate x 10 ms", color="tab:green", ls=":")
+    axes[0].legend(fontsize=7)
+    for ax, lab in zip(axes, ("I1 = tr eps", "J2 = I2 - I1^2/3")):
+        ax.set(xlabel="hopper angle from the horizontal [deg]", ylabel=f"{lab} per {P.CV_EVERY:g} s")
+        ax.axhline(0, color="0.5", lw=0.6)
+        ax.grid(alpha=0.3)
+    fig.suptitle(f"Strain over the outlet (cylinder r = {P.CV_RADIUS * 1e3:.0f} mm, h = {P.CV_HEIGHT * 1e3:.0f} mm), "
+                 f"convex-hull method; mean over t >= {means[0]['steady_from_s']:.2g} s, +- SD of the runs", fontsize=9)
+    fig.tight_layout()
+    gc.plots.save(fig, os.path.join(out, "strain_invariants.png"))
+
+
+def layers(plt, out, angles, by_angle, run_root):
+    """A vertical slice |y| < d of the first run of every angle at the end of the
+    discharge, the grains coloured by the layer they were in at rest."""
+    found = [(a, os.path.join(run_root, f"a{a}-s1", "post")) for a in angles]
+    found = [(a, p) for a, p in found if os.path.exists(os.path.join(p, "final.dump"))]
+    if not found:
+        return
+    fig, axes = plt.subplots(1, len(found), figsize=(max(4.5, 2.3 * len(found) + 0.6), 5.6), squeeze=False)
+    fig.subplots_adjust(left=0.08, right=0.98, bottom=0.08, top=0.86, wspace=0.25)
+    d = P.d_mass_mean()
+    for ax, (a, p) in zip(axes[0], found):
+        fill, final = gc.dem.read_dump(os.path.join(p, "fill.dump")), gc.dem.read_dump(os.path.join(p, "final.dump"))
+        h = P.hopper_height(a)
+        layer = {int(i): int((z - h) // P.LAYER) for i, z in zip(fill["id"], fill["z"])}
+        R, top = P.D_SILO / 2, max(fill["z"]) + 0.03
+        ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
+        fig.canvas.draw()
+        per_m = ax.get_window_extent().width * 72 / fig.dpi / (2.1 * R)      # points per metre
+        sel = np.abs(final["y"]) < d
+        col = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
+        ax.scatter(final["x"][sel], final["z"][sel], s=(0.9 * 2 * final["radius"][sel] * per_m) ** 2,
+                   c=np.where(col, "tab:orange", "tab:blue"), linewidths=0)
+        ro = P.D_OUTLET / 2
+        ax.plot([-ro, -R, -R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
+        ax.plot([ro, R, R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
+        m = by_angle[a][0]
+        t_end = by_angle[a][1][0]["discharge_s"]
+        ax.set_title(f"{a} deg, t = {t_end:.2f} s\n{m['pattern']}", fontsize=8)
+        ax.set_xlabel("x [m]")
+        ax.tick_params(labelsize=7)
+    axes[0][0].set_ylabel("z [m]")
+    fig.suptitle(f"Layers {P.LAYER * 1e3:.0f} mm thick at rest,\nafter the discharge (slice |y| < d)", fontsize=9)
+    gc.plots.save(fig, os.path.join(out, "flow_pattern.png"), dpi=130)
+
+
+def force_chains(plt, out, angles, by_angle, run_root):
+    """The contact network of the first run of every angle in a slice |y| < d
+    (contact midpoints), at rest and at the end of the discharge: a line from
+    centre to centre for every contact stronger than the mean, its width and
+    colour the force over the mean force."""
+    from matplotlib.collections import LineCollection
+    found = []
+    for a in angles:
+        post = os.path.join(run_root, f"a{a}-s1", "post")
+        pairs = sorted(glob.glob(os.path.join(post, "pairs_*.dump")), key=lambda p: int(p.rsplit("_", 1)[1][:-5]))
+        if pairs:
+            found.append((a, [pairs[0]] + ([pairs[-1]] if len(pairs) > 1 else [])))
+    if not found:
+        return
+    rows = max(len(p) for _, p in found)
+    fig, axes = plt.subplots(rows, len(found), figsize=(max(4.5, 2.3 * len(found) + 0.8), 5.2 * rows), squeeze=False)
+    d, R = P.d_mass_mean(), P.D_SILO / 2
+    for j, (a, paths) in enumerate(found):
+        dt = by_angle[a][1][0]["dt_s"]
+        for i, path in enumerate(paths):
+            (step, c), = gc.dem.read_dumps(path)[:1]
+            xi = np.column_stack([c[f"c_pairs[{k}]"] for k in (1, 2, 3)])
+            xj = np.column_stack([c[f"c_pairs[{k}]"] for k in (4, 5, 6)])
+            f = np.linalg.norm(np.column_stack([c[f"c_pairs[{k}]"] for k in (10, 11, 12)]), axis=1)
+            mean = float(f.mean()) if len(f) else 1.0
+            sel = (np.abs(0.5 * (xi[:, 1] + xj[:, 1])) < d) & (f > mean)
+            order = np.argsort(f[sel])
+            segs = np.stack([xi[sel][:, [0, 2]], xj[sel][:, [0, 2]]], axis=1)[order]
+            lc = LineCollection(segs, linewidths=0.4 * f[sel][order] / mean, cmap="inferno_r",
+                                norm=plt.Normalize(1, 6))
+            lc.set_array(f[sel][order] / mean)
+            ax = axes[i][j]
+            ax.add_collection(lc)
+            h = P.hopper_height(a)
+            top = by_angle[a][0]["fill_surface_m"] + 0.02
+            ax.plot([-P.D_OUTLET / 2, -R, -R], [0, h, top], "k-", lw=0.8)
+            ax.plot([P.D_OUTLET / 2, R, R], [0, h, top], "k-", lw=0.8)
+            ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
+            ax.set_title(f"{a} deg, {'at rest' if step == 0 else f't = {step * dt:.2f} s'}\n"
+                         f"mean force {mean * 1e3:.0f} mN", fontsize=8)
+            ax.tick_params(labelsize=7)
+    fig.colorbar(lc, ax=axes.ravel().tolist(), fraction=0.02, pad=0.01, label="contact force / mean (stronger than the mean)")
+    fig.suptitle("Force chains (slice |y| < d, first run of each angle)", fontsize=9)
+    gc.plots.save(fig, os.path.join(out, "force_chains.png"), dpi=130)

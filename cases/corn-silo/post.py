@@ -1,0 +1,366 @@
+"""Post-processing of the corn silo (study.py): one run, one angle (mean +- SD
+of its runs), the study (tables against the angle). Plots: figures.py."""
+import glob
+import json
+import math
+import os
+
+import numpy as np
+
+import granair_cases as gc
+import figures
+import parameters as P
+import cg_strain
+import strain
+import walls
+
+COLUMNS = ("step", "atoms", "in_silo", "below_outlet", "discharged", "removed", "discharged_kg", "removed_kg")
+# the run scalars averaged over an angle's runs (mean, SD) and put in summary.csv
+SCALARS = ("steady_mass_flow_kg_s", "bulk_density_kg_m3", "fill_surface_m",
+           "hopper_static_normal_max_Pa", "hopper_static_normal_max_z_m", "hopper_static_shear_max_Pa",
+           "hopper_static_shear_max_z_m", "shaft_static_normal_max_Pa", "shaft_static_normal_max_z_m",
+           "shaft_static_shear_max_Pa", "shaft_static_shear_max_z_m",
+           "hopper_discharge_normal_max_Pa", "hopper_discharge_normal_max_z_m", "hopper_discharge_shear_max_Pa",
+           "hopper_discharge_shear_max_z_m", "shaft_discharge_normal_max_Pa", "shaft_discharge_normal_max_z_m",
+           "shaft_discharge_shear_max_Pa", "shaft_discharge_shear_max_z_m",
+           "hopper_peak_normal_Pa", "shaft_peak_normal_Pa", "hopper_peak_shear_Pa", "shaft_peak_shear_Pa",
+           "shaft_pressure_at_janssen_depth_Pa", "shaft_static_over_janssen_mid", "K_eff", "mu_mobilised",
+           "fill_walls_over_weight",
+           "I1_mean", "J2_mean", "I1_sd_time", "J2_sd_time", "cv_grains_mean", "I1_of_mean", "J2_of_mean",
+           "cg_I1", "cg_J2",
+           "descent_wall_over_core", "stagnant_mass_fraction", "dead_zone_wall_height_m", "cpu_s", "steady_from_s")
+
+
+def read_flow(paths):
+    """The flow_*.txt files of a run's chunks, in order, as {column: array} (one row per step)."""
+    rows = {}
+    for path in paths:
+        with open(path) as fh:
+            for line in fh:
+                parts = line.split()
+                if len(parts) == len(COLUMNS) and parts[0].isdigit():
+                    rows[int(parts[0])] = [float(x) for x in parts]
+    data = np.array([rows[s] for s in sorted(rows)]).reshape(-1, len(COLUMNS))
+    return {c: data[:, i] for i, c in enumerate(COLUMNS)}
+
+
+def cv_snapshots(post):
+    """The grains around the control volume at every CV_EVERY, all chunks, one per step."""
+    snaps = {}
+    for path in sorted(glob.glob(os.path.join(post, "cv_*.dump"))):
+        for step, cols in gc.dem.read_dumps(path):
+            snaps.setdefault(step, cols)
+    return sorted(snaps.items())
+
+
+def fill_state(fill, h):
+    """(free surface height [m], bulk density [kg/m3]) of the settled fill: the
+    surface at the mean of the 200 highest centres plus a mean radius, the bulk
+    density of the shaft between 2 d above the hopper and 2 d below the surface."""
+    z, r = fill["z"], fill["radius"]
+    top = np.sort(z)[::-1][:200]
+    surface = float(np.mean(top) + np.mean(r))
+    d = P.d_mass_mean()
+    z0, z1 = h + 2 * d, surface - 2 * d
+    area = math.pi * P.D_SILO ** 2 / 4
+    rho_b = float(fill["mass"][(z > z0) & (z < z1)].sum() / (area * (z1 - z0))) if z1 - z0 > 4 * d else math.nan
+    return surface, rho_b
+
+
+def pattern(fill, final, surface, h):
+    """Flow-pattern measures from the grains' motion between the fill and the end:
+    (mean descent of the wall zone over the core's in the lowest third of the shaft
+    fill, stagnant mass fraction, height of the highest stagnant grain at the wall).
+    Wall zone: r > R - 2 d; core: r < 2 d; a grain that has left counts as descended
+    to the sink; stagnant: moved less than d/2."""
+    d, R = P.d_mass_mean(), P.D_SILO / 2
+    where = {int(i): k for k, i in enumerate(final["id"])}
+    idx = np.array([where.get(int(i), -1) for i in fill["id"]])
+    gone = idx < 0
+    zf = np.where(gone, P.SINK_Z, final["z"][np.maximum(idx, 0)])
+    xf = np.where(gone, 0.0, final["x"][np.maximum(idx, 0)])
+    yf = np.where(gone, 0.0, final["y"][np.maximum(idx, 0)])
+    descent = fill["z"] - zf
+    r0 = np.hypot(fill["x"], fill["y"])
+    low = (fill["z"] > h + d) & (fill["z"] < h + (surface - h) / 3)
+    wall, core = low & (r0 > R - 2 * d), low & (r0 < 2 * d)
+    ratio = float(descent[wall].mean() / descent[core].mean()) if wall.any() and core.any() and \
+        descent[core].mean() > 0 else math.nan
+    moved = np.sqrt((xf - fill["x"]) ** 2 + (yf - fill["y"]) ** 2 + descent ** 2)
+    stagnant = ~gone & (moved < d / 2)
+    at_wall = stagnant & (r0 > R - 2 * d)
+    return (ratio, float(fill["mass"][stagnant].sum() / fill["mass"].sum()),
+            float(fill["z"][at_wall].max()) if at_wall.any() else 0.0)
+
+
+def run(name, run_dir, v, state, out):
+    """Post-process one finished run into OUT/a<angle>/s<k>*: returns its scalars."""
+    angle, k = v["ANGLE"], int(name.rsplit("-s", 1)[1])
+    pdir, dt, h, d = os.path.join(run_dir, "post"), v["DT"], v["HOPPER_HEIGHT"], P.d_mass_mean()
+    adir = os.path.join(out, f"a{angle}")
+    os.makedirs(adir, exist_ok=True)
+    flow = read_flow(sorted(glob.glob(os.path.join(pdir, "flow_*.txt"))))
+    t = flow["step"] * dt
+    with open(os.path.join(pdir, "inserted.txt")) as fh:
+        inserted = int(float(fh.read().split()[0]))
+    last = {c: int(flow[c][-1]) for c in COLUMNS[:6]}
+    fill = gc.dem.read_dump(os.path.join(pdir, "fill.dump"))
+    final = gc.dem.read_dump(os.path.join(pdir, "final.dump"))
+    surface, rho_b = fill_state(fill, h)
+    with open(os.path.join(pdir, "fill_forces.txt")) as fh:
+        weight, fz_hopper, fz_shaft, fz_shutter = (float(x) for x in fh.read().split()[:4])
+    m = flow["discharged_kg"]
+    w = gc.series.slope(t, m, min(P.STEADY_FROM, 0.4 * t[-1]))
+    centres, (rate,) = gc.powder.flow_windows(t, m, 0.1, keep_last=None, tol=1e-9)
+    gc.series.write_csv(os.path.join(adir, f"s{k}_mass_flow.csv"), [("t", centres), ("mass_flow_kg_s", rate)],
+                        fmt="{:.6g}")
+
+    # wall loads: the static fill, and every dump of the discharge
+    mesh = gc.dem.read_mesh_vtk(os.path.join(pdir, "walls_fill.vtk"))
+    rings = walls.Rings(mesh, angle)
+    sn, ss = walls.loads(os.path.join(pdir, "walls_fill.vtk"))
+    files = [(s, p) for s, p in walls.series(pdir) if s > 0]
+    steady = [(s, p) for s, p in files if s * dt >= min(P.STEADY_FROM, 0.4 * t[-1]) - 1e-9]
+    el_n = np.zeros_like(sn)
+    el_s = np.zeros_like(ss)
+    ring_n, ring_s = [], []
+    for s, p in files:
+        n_, s_ = walls.loads(p)
+        ring_n.append(rings.mean(n_))
+        ring_s.append(rings.mean(s_))
+        if (s, p) in steady:
+            el_n += n_ / len(steady)
+            el_s += s_ / len(steady)
+    ring_n, ring_s = np.array(ring_n), np.array(ring_s)
+    i0 = len(files) - len(steady)
+    prof = dict(static_normal_Pa=rings.mean(sn), static_shear_Pa=rings.mean(ss),
+                discharge_normal_Pa=ring_n[i0:].mean(axis=0), discharge_shear_Pa=ring_s[i0:].mean(axis=0),
+                peak_normal_Pa=ring_n.max(axis=0), peak_shear_Pa=ring_s.max(axis=0))
+    res = dict(run=name, angle_deg=angle, seed=v["SEED"], grains=v["GRAINS"], youngs_Pa=v["YOUNGS"], dt_s=dt,
+               discharge_s=float(t[-1]), steady_from_s=min(P.STEADY_FROM, 0.4 * t[-1]), steady_mass_flow_kg_s=w,
+               bulk_density_kg_m3=rho_b, fill_surface_m=surface, hopper_height_m=h,
+               fill_weight_N=weight, fill_hopper_fz_N=fz_hopper, fill_shaft_fz_N=fz_shaft,
+               fill_shutter_fz_N=fz_shutter, fill_walls_over_weight=(fz_hopper + fz_shaft + fz_shutter) / weight,
+               requested=v["GRAINS"], inserted=inserted, in_silo=last["in_silo"], below_outlet=last["below_outlet"],
+               removed=last["removed"], discharged=last["discharged"], atoms=last["atoms"],
+               discharged_kg=float(flow["discharged_kg"][-1]), removed_kg=float(flow["removed_kg"][-1]),
+               accounting_closes=inserted == last["in_silo"] + last["below_outlet"] + last["removed"],
+               cpu_s=state["cpu_fill_s"] + state["cpu_discharge_s"], cpu_fill_s=state["cpu_fill_s"],
+               wall_s=state["wall_s"])
+    for wall, hop in (("hopper", True), ("shaft", False)):
+        for kind, key in (("static", "static"), ("discharge", "discharge")):
+            for q in ("normal", "shear"):
+                val, z, along = walls.maximum(rings, prof[f"{key}_{q}_Pa"], hop)
+                res[f"{wall}_{kind}_{q}_max_Pa"], res[f"{wall}_{kind}_{q}_max_z_m"] = val, z
+                res[f"{wall}_{kind}_{q}_max_along_m"] = along
+        for q in ("normal", "shear"):
+            res[f"{wall}_peak_{q}_Pa"] = walls.maximum(rings, prof[f"peak_{q}_Pa"], hop)[0]
+
+    # the shaft at rest against Janssen (K band), away from the free surface and the transition
+    depth = surface - rings.z
+    shaft = ~rings.is_hopper & (depth > 2 * d) & (rings.z > h + 2 * d)
+    lo, hi = (gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, kk, P.G)[1] for kk in P.K_JANSSEN)
+    mid = gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, sum(P.K_JANSSEN) / 2, P.G)[1]
+    meas = prof["static_normal_Pa"]
+    # Janssen's slice balance with the run's own wall shear: the vertical stress at a ring is the
+    # weight above it less the wall shear above it (taken as vertical), over the cross-section;
+    # K_eff = wall pressure / that stress, mu_mob = wall shear / wall pressure (the friction mobilised)
+    area = math.pi * P.D_SILO ** 2 / 4
+    ring_area = rings.weights
+    above_w = np.array([fill["mass"][fill["z"] > zk].sum() * P.G for zk in rings.z])
+    above_t = np.array([(prof["static_shear_Pa"] * ring_area)[~rings.is_hopper & (rings.z > zk)].sum() for zk in rings.z])
+    sigma_v = (above_w - above_t) / area
+    res.update(janssen_rings=int(shaft.sum()),
+               hydrostatic_mean_Pa=float((rho_b * P.G * depth)[shaft].mean()) if shaft.any() else math.nan,
+               K_eff=float(np.mean(prof["static_normal_Pa"][shaft] / sigma_v[shaft])) if shaft.any() else math.nan,
+               mu_mobilised=float(np.sum((prof["static_shear_Pa"] * ring_area)[shaft]) /
+                                  np.sum((prof["static_normal_Pa"] * ring_area)[shaft])) if shaft.any() else math.nan,
+               shaft_static_mean_Pa=float(meas[shaft].mean()) if shaft.any() else math.nan,
+               janssen_lo_mean_Pa=float(lo[shaft].mean()) if shaft.any() else math.nan,
+               janssen_hi_mean_Pa=float(hi[shaft].mean()) if shaft.any() else math.nan,
+               shaft_static_over_janssen_mid=float(meas[shaft].mean() / mid[shaft].mean()) if shaft.any() else math.nan)
+    sel = ~rings.is_hopper
+    order = np.argsort(depth[sel])
+    res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(P.janssen_depth(v["GRAINS"]), depth[sel][order], meas[sel][order],
+                                                                left=math.nan, right=math.nan))
+
+    # strain invariants over the outlet
+    rows = strain.series(cv_snapshots(pdir), P.CV_RADIUS, P.CV_HEIGHT)
+    st = np.array(rows).reshape(-1, 13)
+    gc.series.write_csv(os.path.join(adir, f"s{k}_strain.csv"),
+                        [("t0", st[:, 0] * dt), ("t1", st[:, 1] * dt), ("grains", st[:, 2]), ("grains_lost", st[:, 3]),
+                         ("hull_volume_m3", st[:, 4]), ("I1", st[:, 5]), ("J2", st[:, 6]), ("eps_xx", st[:, 7]),
+                         ("eps_yy", st[:, 8]), ("eps_zz", st[:, 9]), ("eps_xy", st[:, 10]), ("eps_yz", st[:, 11]),
+                         ("eps_xz", st[:, 12])], fmt="{:.6g}")
+    ss_ = st[st[:, 0] * dt >= res["steady_from_s"] - 1e-9]
+    res.update(strain_interval_s=P.CV_EVERY, strain_intervals=len(ss_),
+               I1_mean=float(ss_[:, 5].mean()) if len(ss_) else math.nan,
+               J2_mean=float(ss_[:, 6].mean()) if len(ss_) else math.nan,
+               I1_sd_time=float(ss_[:, 5].std()) if len(ss_) else math.nan,
+               J2_sd_time=float(ss_[:, 6].std()) if len(ss_) else math.nan,
+               cv_grains_mean=float(ss_[:, 2].mean()) if len(ss_) else math.nan,
+               cv_grains_lost=int(st[:, 3].sum()) if len(st) else 0)
+    # the same from the CG velocity field (granairCG), beside the hull's of the time-mean strain
+    res["I1_of_mean"], res["J2_of_mean"] = cg_strain.hull_mean(rows, res["steady_from_s"], dt)
+    cg = cg_strain.run(run_dir, v, res["steady_from_s"], float(t[-1]))
+    res.update(cg_I1=cg[0] if cg else math.nan, cg_J2=cg[1] if cg else math.nan, cg_points=cg[3] if cg else 0,
+               cg_width_m=P.CG_WIDTH)
+    res["descent_wall_over_core"], res["stagnant_mass_fraction"], res["dead_zone_wall_height_m"] = \
+        pattern(fill, final, surface, h)
+
+    gc.series.write_rows(os.path.join(adir, f"s{k}_walls.csv"),
+                         [dict(wall="hopper" if rings.is_hopper[i] else "shaft", z_m=rings.z[i],
+                               along_wall_m=rings.along[i], depth_m=depth[i],
+                               **{q: float(prof[q][i]) for q in prof}) for i in range(rings.n)], fmt="{:.6g}")
+    gc.series.write_csv(os.path.join(adir, f"s{k}_elements.csv"),
+                        [("static_normal_Pa", sn), ("static_shear_Pa", ss), ("discharge_normal_Pa", el_n),
+                         ("discharge_shear_Pa", el_s)], fmt="{:.5g}")
+    with open(os.path.join(adir, f"s{k}.json"), "w") as fh:
+        json.dump(res, fh, indent=1, default=float)
+    print(f"corn-silo {name}: W = {w:.4g} kg/s, {inserted} = {last['in_silo']} + {last['below_outlet']} + "
+          f"{last['removed']} ({'closes' if res['accounting_closes'] else 'DOES NOT CLOSE'}), shaft/Janssen "
+          f"{res['shaft_static_over_janssen_mid']:.3g}, I1 {res['I1_mean']:.3g}, J2 {res['J2_mean']:.3g}, "
+          f"{res['cpu_s']:.0f} s CPU", flush=True)
+    return res
+
+
+def mean_sd(values):
+    x = np.array([v for v in values if v is not None and math.isfinite(v)], dtype=float)
+    if not len(x):
+        return math.nan, math.nan
+    return float(x.mean()), float(x.std(ddof=1)) if len(x) > 1 else math.nan
+
+
+def angle(out, a, runs, seeds, size, run_root):
+    """Mean +- SD of one angle's runs (sample SD, n - 1): OUT/a<angle>/mean.json,
+    mass_flow.csv (mean of the runs), level.json, walls.csv (mean profiles) and
+    the mean wall loads as VTK (when the run folders are there)."""
+    adir = os.path.join(out, f"a{a}")
+    res = dict(angle_deg=a, runs=len(runs), runs_planned=seeds, grains=size["grains"])
+    for key in SCALARS:
+        res[key], res[key + "_sd"] = mean_sd([r.get(key) for r in runs])
+    # mass flow: every grain moves once any is withdrawn (Jenike); funnel flow leaves grains at rest
+    res["pattern"] = "mass flow" if res["stagnant_mass_fraction"] < P.STAGNANT_MASS_FLOW else "funnel flow"
+    flows = [gc.series.read_csv(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_mass_flow.csv")) for r in runs]
+    n = min(len(f["t"]) for f in flows)
+    gc.series.write_csv(os.path.join(adir, "mass_flow.csv"),
+                        [("t", flows[0]["t"][:n]), ("mass_flow_kg_s", np.mean([f["mass_flow_kg_s"][:n] for f in flows], axis=0)),
+                         ("sd_kg_s", np.std([f["mass_flow_kg_s"][:n] for f in flows], axis=0, ddof=1) if len(flows) > 1
+                          else np.full(n, math.nan))], fmt="{:.6g}")
+    profs = [gc.series.read_table(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_walls.csv")) for r in runs]
+    cols = [c for c in profs[0][0] if c.endswith("_Pa")]
+    rows = []
+    for i, row in enumerate(profs[0]):
+        rr = dict(wall=row["wall"], z_m=float(row["z_m"]), along_wall_m=float(row["along_wall_m"]),
+                  depth_m=float(np.mean([float(p[i]["depth_m"]) for p in profs])))
+        for c in cols:
+            rr[c], rr[c[:-3] + "_sd_Pa"] = mean_sd([float(p[i][c]) for p in profs])
+        rows.append(rr)
+    gc.series.write_rows(os.path.join(adir, "walls.csv"), rows, fmt="{:.6g}")
+    res["wall_time_s"] = float(np.mean([r["wall_s"] for r in runs]))
+    gc.levels.write(os.path.join(adir, "level.json"), case="corn-silo", level="cg-dem",
+                    model=f"DEM, unscaled corn (s = 1), hopper {a} deg from the horizontal, {size['grains']} grains, "
+                          f"E = {runs[0]['youngs_Pa']:.3g} Pa, Hooke, mean of {len(runs)} runs",
+                    b_mm=P.D_OUTLET * 1e3, air=False, steady_mass_flow_kg_s=res["steady_mass_flow_kg_s"],
+                    steady_window_s=[runs[0]["steady_from_s"], runs[0]["discharge_s"]], outlet_dpdz_Pa_m=None,
+                    wall_time_s=round(res["wall_time_s"], 1), cores=1, timeseries="mass_flow.csv",
+                    hopper_angle_deg=a, shaft_wall_pressure_Pa=res["shaft_pressure_at_janssen_depth_Pa"],
+                    shaft_wall_pressure_depth_m=P.janssen_depth(size["grains"]))
+    # the mean wall loads per element, on the first run's mesh, for ParaView
+    first = os.path.join(run_root, runs[0]["run"], "post", "walls_fill.vtk")
+    if os.path.exists(first):
+        mesh = gc.dem.read_mesh_vtk(first)
+        els = [gc.series.read_csv(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_elements.csv")) for r in runs]
+        pts, tri = unique_points(mesh)
+        for state in ("static", "discharge"):
+            gc.dem.write_mesh_vtk(os.path.join(adir, f"wall_loads_{state}.vtk"), pts, tri,
+                                  {f"{q}_Pa": np.mean([e[f"{state}_{q}_Pa"] for e in els], axis=0)
+                                   for q in ("normal", "shear")},
+                                  f"corn silo {a} deg: {state} wall loads [Pa], mean of {len(runs)} runs")
+    with open(os.path.join(adir, "mean.json"), "w") as fh:
+        json.dump(res, fh, indent=1, default=float)
+    return res
+
+
+def unique_points(mesh):
+    """The mesh with the points LIGGGHTS repeats per triangle merged (a smaller VTK)."""
+    key = np.round(mesh["points"], 9)
+    uniq, inverse = np.unique(key, axis=0, return_inverse=True)
+    return uniq, inverse.reshape(-1)[np.array(mesh["cells"])]
+
+
+def study(out, done, angles, seeds, size, c):
+    """Every angle with runs: its mean (angle()), the checks of every run, the
+    study table and figures."""
+    run_root = os.path.join(out, "runs")
+    by_angle = {}
+    for a in angles:
+        runs = []
+        for k in range(1, seeds + 1):
+            path = os.path.join(out, f"a{a}", f"s{k}.json")
+            if f"a{a}-s{k}" in done:
+                runs.append(done[f"a{a}-s{k}"])
+            elif os.path.exists(path):
+                with open(path) as fh:
+                    runs.append(json.load(fh))
+        if runs:
+            by_angle[a] = (angle(out, a, runs, seeds, size, run_root), runs)
+    for a, (_, runs) in by_angle.items():
+        for r in runs:
+            check_run(c, r)
+    # the hull method against a homogeneous deformation, for which it is exact (divergence theorem)
+    rng = np.random.default_rng(7)
+    x = rng.uniform(-P.CV_RADIUS, P.CV_RADIUS, (300, 3))
+    grad = np.array([[0.010, 0.020, 0.0], [0.0, -0.030, 0.005], [0.001, 0.0, 0.020]])
+    eps = strain.hull_strain(x, x @ grad.T + 0.003)[0]
+    c.near("convex-hull strain of a homogeneous deformation: largest error of a component", float(
+        np.abs(eps - 0.5 * (grad + grad.T)).max()), 0.0, 1e-12, "the surface integral is exact for a linear "
+        "displacement field (any translation drops out)")
+    if not by_angle:
+        print("corn-silo: no finished runs to post-process", flush=True)
+        return
+    rows = [m for m, _ in by_angle.values()]
+    gc.series.write_rows(os.path.join(out, "summary.csv"), rows, fmt="{:.6g}")
+    figures.all(out, by_angle, run_root)
+    table(out, rows, P.janssen_depth(size["grains"]))
+
+
+def check_run(c, r):
+    name = r["run"]
+    c.exact(f"{name}: inserted = in silo + below the outlet + removed at the sink",
+            r["inserted"], r["in_silo"] + r["below_outlet"] + r["removed"], "integer counts: no grain lost")
+    c.exact(f"{name}: grains inserted = requested", r["inserted"], r["requested"],
+            "LIGGGHTS insert/pack placed every grain asked for")
+    c.close(f"{name}: vertical wall forces of the fill at rest (hopper + shaft + shutter) / its weight",
+            r["fill_walls_over_weight"], 1.0, 0.02, "static equilibrium of the settled fill: the stress module's "
+            "forces carry the weight; 2 %: the fill is settled to an rms speed of 5 mm/s, not to rest (0.1-0.8 % measured)")
+    c.within(f"{name}: shaft wall pressure at rest, mean of the rings 2 d below the surface and above the hopper",
+             r["shaft_static_mean_Pa"], r["janssen_lo_mean_Pa"], r["hydrostatic_mean_Pa"],
+             f"between Janssen's limits: his assumption, the wall friction mu_w = {P.MU_PW} fully mobilised, with "
+             f"the lowest K = {P.K_JANSSEN[0]:.3f}, and no wall friction with K = 1 (rho_b g h); measured "
+             f"{r['shaft_static_over_janssen_mid']:.2f} x Janssen (K = {sum(P.K_JANSSEN) / 2:.2f}), K_eff "
+             f"{r['K_eff']:.2f}, mu mobilised {r['mu_mobilised']:.2f}: README 'Janssen'", " Pa")
+
+
+def table(out, rows, depth):
+    """summary.md: the results against the angle, mean +- SD of the runs."""
+    def f(r, key, scale=1.0, digits=3):
+        m, s = r[key] * scale, r[key + "_sd"] * scale
+        return f"{m:.{digits}g}" + (f" ± {s:.2g}" if math.isfinite(s) else "")
+    head = ["angle [deg]", "runs", "W [kg/s]", "hopper p max static / discharge [Pa]", "hopper tau max static / discharge [Pa]",
+            "shaft p max static / discharge [Pa]", "shaft tau max static / discharge [Pa]",
+            f"shaft p at {depth:g} m [Pa]", "I1 (per 0.01 s)", "J2 (per 0.01 s)", "wall/core descent",
+            "stagnant mass", "pattern"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in rows:
+        lines.append("| " + " | ".join([
+            f"{r['angle_deg']}", f"{r['runs']}", f(r, "steady_mass_flow_kg_s"),
+            f(r, "hopper_static_normal_max_Pa") + " / " + f(r, "hopper_discharge_normal_max_Pa"),
+            f(r, "hopper_static_shear_max_Pa") + " / " + f(r, "hopper_discharge_shear_max_Pa"),
+            f(r, "shaft_static_normal_max_Pa") + " / " + f(r, "shaft_discharge_normal_max_Pa"),
+            f(r, "shaft_static_shear_max_Pa") + " / " + f(r, "shaft_discharge_shear_max_Pa"),
+            f(r, "shaft_pressure_at_janssen_depth_Pa"), f(r, "I1_mean"), f(r, "J2_mean"),
+            f(r, "descent_wall_over_core", digits=2), f(r, "stagnant_mass_fraction", 100, 2) + " %", r["pattern"]]) + " |")
+    with open(os.path.join(out, "summary.md"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print("\n".join(lines), flush=True)

@@ -1,0 +1,268 @@
+#!/usr/bin/python3
+"""Corn silo, hopper-angle sweep (Rivera, Avila & Avila 2023, reference case D;
+README.md): DEM only (LIGGGHTS, no air).
+
+    study.py [--size study|demo|test] [--angles A ...] [--seeds N] [--jobs J]
+             [--youngs E] [--out DIR] [--check] [--post-only] [--fresh] [--setup-only]
+
+For every hopper angle (from the horizontal) and every run (its own random
+insertion), in OUT/runs/a<angle>-s<k>/: the fill (template/dem/in.fill: the
+grains inserted at random above the shut outlet and settled), then the
+discharge (template/dem/in.liggghts) in chunks of CHUNK s, each one LIGGGHTS
+process from the previous one's restart. A stopped study resumes: finished
+runs are skipped, an unfinished one goes on from its last restart (a fill
+that did not finish starts again). Jobs run --jobs at a time (one rank each).
+
+Each finished run is post-processed into OUT/a<angle>/ (post.py): mass flow,
+particle accounting, wall loads (static fill and discharge, per ring of wall
+elements, maxima and where), the strain invariants over the outlet
+(strain.py), the flow pattern and, for the first run, the coloured layers.
+Then every angle with all its runs: mean +- SD (OUT/a<angle>/mean.json,
+level.json, the mean wall loads as VTK), and the study's tables and figures
+(OUT/summary.csv, summary.md, *.png). --post-only does only that, from the
+runs that exist.
+
+Checked (--check exits 1 on a failure): per run, the exact accounting
+(inserted = in the silo + below the outlet + removed at the sink; grains
+requested = inserted); the shaft's static wall pressure against Janssen's
+(the band of K); the strain of a homogeneous deformation by the hull method.
+"""
+import json
+import math
+import os
+import shutil
+import time
+
+import granair_cases as gc
+import geometry
+import parameters as P
+import post
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUTS = {"study": "results", "full": "results-full", "demo": "results-demo", "test": "results-test"}
+
+
+def numbers(grains, discharge, angle, k, youngs):
+    """Every number of one run (the template's placeholders, the post-processing's)."""
+    radii = [d / 2 for d in P.DIAMETERS]
+    t_r = gc.dem.rayleigh_time(min(radii), youngs, P.NU, P.RHO_P)
+    dt = P.RAYLEIGH_FRACTION * t_r
+    cv = max(1, round(P.CV_EVERY / dt))               # every output interval is a multiple of this
+    per = lambda t: max(1, round(t / P.CV_EVERY)) * cv          # noqa: E731
+    h = P.hopper_height(angle)
+    half = P.D_SILO / 2 + 0.005
+    fill_chunk = per(0.05)
+    insertion, z_ins_hi = layers(grains, h, radii, P.SEEDS[k][0], per(P.LAYER_TIME))
+    z_hi = max(z_ins_hi, P.STRESS_TOP) + 0.02
+    youngs_wall = P.YOUNGS_WALL_REF * youngs / P.YOUNGS_REF
+    v = dict(GRAINS=grains, ANGLE=angle, SEED=P.SEEDS[k][0], DIST_SEED=P.SEEDS[k][1], DT=dt, RAYLEIGH_S=t_r,
+             YOUNGS=youngs, YOUNGS_WALL=youngs_wall, SOFTENING=youngs / P.YOUNGS_REF, NU=P.NU, NU_WALL=P.NU_WALL,
+             E_PP=P.E_PP, E_PW=P.E_PW, MU_PP=P.MU_PP, MU_PW=P.MU_PW, RHO_P=P.RHO_P, G=P.G,
+             CHARACTERISTIC_VELOCITY=P.CHARACTERISTIC_VELOCITY, SKIN=0.3 * P.DIAMETERS[2],
+             MODULUS_RANGE="\n".join(["soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"]
+                                      * (youngs < 5e6) + ["hard_particles  yes             # ... and this above 1e9 Pa"]
+                                      * (youngs_wall > 1e9)) or "# (5e6 <= E <= 1e9 Pa: LIGGGHTS' default range)",
+             HALF=half, Z_LO=P.SINK_Z - 0.02, Z_HI=z_hi, INSERTION=insertion, LAYER_HEIGHT=P.LAYER_HEIGHT,
+             INSERT_FRACTION=P.INSERT_FRACTION, HOPPER_HEIGHT=h, SINK_Z=P.SINK_Z,
+             SETTLE_RMS=P.SETTLE_RMS, SETTLE_MIN=P.SETTLE_MIN, SETTLE_MAX=P.SETTLE_MAX, CHUNK_STEPS=fill_chunk,
+             N_MIN=math.ceil(P.SETTLE_MIN / (fill_chunk * dt)), N_MAX=math.ceil(P.SETTLE_MAX / (fill_chunk * dt)),
+             CV_RADIUS=P.CV_RADIUS, CV_HEIGHT=P.CV_HEIGHT, CV_DUMP_RADIUS=P.CV_RADIUS + P.CV_MARGIN, CV_DUMP_LO=-P.CV_MARGIN,
+             CV_DUMP_HI=P.CV_HEIGHT + P.CV_MARGIN, CV_STEPS=cv, FLOW_STEPS=per(P.FLOW_EVERY), WALL_STEPS=per(P.WALL_EVERY),
+             FULL_STEPS=per(P.FULL_EVERY), THERMO_STEPS=per(0.05), CHUNK=P.CHUNK, DISCHARGE_CHUNK_STEPS=per(P.CHUNK),
+             DISCHARGE_STEPS=per(discharge), DISCHARGE_S=per(discharge) * dt)
+    for i, (r, w) in enumerate(zip(radii, P.MASS_FRACTIONS), 1):
+        v[f"R{i}"], v[f"W{i}"] = r, w
+    return v
+
+
+def layers(grains, h, radii, seed, steps):
+    """The fill's insertion block: layers of LAYER_HEIGHT at INSERT_FRACTION, each
+    just above the estimated rest level of the grains below it (BULK_FRACTION),
+    inserted LAYER_TIME apart. Returns (LIGGGHTS lines, top of the last layer)."""
+    r_ins = P.D_SILO / 2 - max(radii) - 0.001
+    area, a_ins, v = math.pi * P.D_SILO ** 2 / 4, math.pi * r_ins ** 2, P.mean_grain_volume()
+    r_o, r = P.D_OUTLET / 2, P.D_SILO / 2
+    v_hopper = math.pi * h / 3 * (r_o ** 2 + r_o * r + r ** 2)
+    n_layers = max(1, math.ceil(grains * v / (P.INSERT_FRACTION * a_ins) / P.LAYER_HEIGHT))
+    counts = [grains // n_layers + (1 if i < grains % n_layers else 0) for i in range(n_layers)]
+    lines, below, p = [], 0, seed
+    for i, n in enumerate(counts):
+        rest = h + max(0.0, below * v / P.BULK_FRACTION - v_hopper) / area
+        lo = rest + P.LAYER_GAP
+        hi = lo + n * v / (P.INSERT_FRACTION * a_ins)
+        p = next_prime(p + 1)
+        lines += [f"region          layer{i + 1} cylinder z 0 0 {r_ins:.6g} {lo:.6g} {hi:.6g} units box",
+                  f"fix ins{i + 1} all insert/pack seed {p} distributiontemplate pdd insert_every once overlapcheck yes "
+                  f"all_in yes particles_in_region {n} region layer{i + 1}",
+                  f"run             {steps if i < len(counts) - 1 else 1}",
+                  f"unfix           ins{i + 1}"]
+        below += n
+    return "\n".join(lines), hi
+
+
+def next_prime(n):
+    """The smallest prime >= n (LIGGGHTS wants prime seeds)."""
+    while n < 2 or any(n % q == 0 for q in range(2, int(math.isqrt(n)) + 1)):
+        n += 1
+    return n
+
+
+def liggghts(inp, tag):
+    """LIGGGHTS on one input; its screen output goes to the step's log (log/<tag>.log)."""
+    return ["liggghts", "-in", inp, "-log", f"log/log.{tag}"]
+
+
+def read_state(run):
+    path = os.path.join(run, "post", "state.json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as fh:
+        return json.load(fh)
+
+
+def write_state(run, state):
+    path = os.path.join(run, "post", "state.json")
+    with open(path + ".tmp", "w") as fh:
+        json.dump(state, fh, indent=1)
+    os.replace(path + ".tmp", path)                  # a state is whole or absent
+
+
+def setup(run, v, fresh):
+    """The run folder from the template. A run that has started (its fill is done)
+    is kept, and must have been set up with the same numbers."""
+    saved = os.path.join(run, "numbers.json")
+    if os.path.exists(saved) and read_state(run) is not None and not fresh:
+        with open(saved) as fh:
+            old = json.load(fh)
+        diff = [k for k in v if old.get(k) != v[k]]
+        if diff:
+            raise gc.CaseError(f"{run} was set up with other numbers ({', '.join(f'{k}: {old.get(k)} vs {v[k]}' for k in diff[:4])}); "
+                               f"run with --fresh to start it again, or give another --out")
+        return
+    gc.runner.clean(run)
+    gc.template.render(os.path.join(HERE, "template"), run, v)
+    geometry.write(os.path.join(run, "dem"), v["ANGLE"], v["HALF"], v["Z_HI"] - 0.001)
+    os.makedirs(os.path.join(run, "post"))
+    with open(saved, "w") as fh:
+        json.dump(v, fh, indent=1)
+
+
+def simulate(name, run, v):
+    """Fill (if not done) and the discharge chunks still to run; returns the state."""
+    state = read_state(run)
+    if state is None:
+        t0 = time.time()
+        for f in os.listdir(os.path.join(run, "post")):
+            os.remove(os.path.join(run, "post", f))
+        cpu = gc.runner.run(liggghts("dem/in.fill", "fill"), run, "fill")
+        with open(os.path.join(run, "log", "log.fill")) as fh:
+            settled = [ln.strip() for ln in fh if ln.startswith("granair fill: settled")]
+        if not settled:
+            raise gc.CaseError(f"{run}/log/log.fill: the fill did not report settling")
+        print(f"corn-silo {name}: {settled[-1]} ({cpu:.0f} s CPU)", flush=True)
+        state = dict(step=0, ndis=0, chunk=0, cpu_fill_s=cpu, cpu_discharge_s=0.0, wall_s=time.time() - t0)
+        write_state(run, state)
+    total, chunk = v["DISCHARGE_STEPS"], v["DISCHARGE_CHUNK_STEPS"]
+    while state["step"] < total:
+        t0 = time.time()
+        upto = min(total, (state["step"] // chunk + 1) * chunk)
+        k = state["chunk"] + 1
+        post = os.path.join(run, "post")
+        restart = "post/fill.restart" if state["step"] == 0 else f"post/discharge-{state['step']}.restart"
+        for f in os.listdir(post):                 # what a stopped chunk left beyond the restart
+            step = post_step(f)
+            if step is not None and step > state["step"]:
+                os.remove(os.path.join(post, f))
+        cmd = liggghts("dem/in.liggghts", f"discharge-{k:03d}") + [
+            "-var", "restart", restart, "-var", "upto", str(upto), "-var", "chunk", f"{k:03d}",
+            "-var", "ndis0", str(state["ndis"]), "-var", "nrem0", str(state.get("orphans", 0)),
+            "-var", "mrem0", repr(state.get("orphans_kg", 0.0))]
+        cpu = gc.runner.run(cmd, run, f"discharge-{k:03d}")
+        os.replace(os.path.join(post, "discharge.restart"), os.path.join(post, f"discharge-{upto}.restart"))
+        flow = post_flow_last(os.path.join(post, f"flow_{k:03d}.txt"))
+        with open(os.path.join(post, f"orphans_{k:03d}.txt")) as fh:
+            n_orphans, m_orphans = fh.read().split()[:2]
+        old = restart if state["step"] else None
+        state.update(step=upto, ndis=int(flow["discharged"]), chunk=k, cpu_discharge_s=state["cpu_discharge_s"] + cpu,
+                     orphans=state.get("orphans", 0) + int(float(n_orphans)),
+                     orphans_kg=state.get("orphans_kg", 0.0) + float(m_orphans), wall_s=state["wall_s"] + time.time() - t0)
+        write_state(run, state)
+        if old:
+            os.remove(os.path.join(run, old))
+        print(f"corn-silo {name}: t = {upto * v['DT']:.2f} of {v['DISCHARGE_S']:.2f} s, {int(flow['discharged'])} grains "
+              f"discharged, {state['cpu_fill_s'] + state['cpu_discharge_s']:.0f} s CPU so far", flush=True)
+    return state
+
+
+def post_step(filename):
+    """The step in the name of an output file written every so many steps (walls_N.vtk, full_N.dump)."""
+    for prefix, suffix in (("walls_", ".vtk"), ("full_", ".dump"), ("pairs_", ".dump")):
+        if filename.startswith(prefix) and filename.endswith(suffix):
+            try:
+                return int(filename[len(prefix):-len(suffix)])
+            except ValueError:
+                return None
+    return None
+
+
+def post_flow_last(path):
+    rows = post.read_flow([path])
+    if not len(rows["step"]):
+        raise gc.CaseError(f"{path}: no rows (did the chunk run?)")
+    return {k: rows[k][-1] for k in rows}
+
+
+def one(name, run, v, a, out):
+    """One run: simulate what is left, post-process it."""
+    if not a.post_only:
+        state = simulate(name, run, v)
+    else:
+        state = read_state(run)
+        if state is None or state["step"] < v["DISCHARGE_STEPS"]:
+            return None
+    return post.run(name, run, v, state, out)
+
+
+def main():
+    ap = gc.cli.parser(__doc__, out_help="results (default: results/, results-demo/ or results-test/ by --size)")
+    ap.add_argument("--size", choices=sorted(P.SIZES), default="study",
+                    help="study: 8000 grains, 0.75 s, 6 angles x 3 runs; full: 25 000 grains, 3 s, 6 angles x 3 runs; "
+                         "demo: 8000 grains, 1 s, 10 and 35 deg; test: 8000 grains, 0.2 s, 27 deg")
+    ap.add_argument("--angles", type=float, nargs="+", help="hopper angles [deg from the horizontal] (default: the size's)")
+    ap.add_argument("--seeds", type=int, help=f"runs per angle, 1-{len(P.SEEDS)} (default: the size's)")
+    ap.add_argument("--jobs", type=int, default=2, help="runs at a time, one rank each (default 2)")
+    ap.add_argument("--youngs", type=float, default=P.YOUNGS, help=f"corn Young's modulus [Pa] (default {P.YOUNGS:g})")
+    ap.add_argument("--discharge", type=float, help="discharge time [s] (default: the size's)")
+    ap.add_argument("--post-only", action="store_true", help="post-process the finished runs only (nothing is run)")
+    ap.add_argument("--fresh", action="store_true", help="start every run again (default: resume)")
+    size = P.SIZES[ap.parse_known_args()[0].size]
+    a = gc.cli.parse(ap, os.path.join(HERE, OUTS[ap.parse_known_args()[0].size]))
+    angles = [int(x) if float(x).is_integer() else x for x in (a.angles or size["angles"])]
+    seeds = a.seeds or size["seeds"]
+    discharge = a.discharge or size["discharge"]
+    bad = [x for x in angles if not 0 < x < 90]
+    if bad or not 1 <= seeds <= len(P.SEEDS) or a.jobs < 1 or not a.youngs > 0 or not discharge > 0 or a.np != 1:
+        ap.error(f"--angles {bad or angles} (0-90 deg), --seeds {seeds} (1-{len(P.SEEDS)}), --jobs {a.jobs} (>= 1), "
+                 f"--youngs {a.youngs} (> 0), --discharge {discharge} (> 0), --np {a.np} (1: LIGGGHTS runs serially)")
+    print(f"corn-silo: {size['grains']} grains, {discharge:g} s of discharge, angles {', '.join(map(str, angles))} deg, "
+          f"{seeds} run(s) each, E = {a.youngs:.3g} Pa, {a.jobs} at a time, results in {a.out}", flush=True)
+    tasks = []
+    for k in range(seeds):          # seed-major: a study stopped early still has every angle
+        for angle in angles:
+            name = f"a{angle}-s{k + 1}"
+            v = numbers(size["grains"], discharge, angle, k, a.youngs)
+            run = os.path.join(a.out, "runs", name)
+            if not a.post_only:
+                setup(run, v, a.fresh)
+            tasks.append((name, one, (name, run, v, a, a.out)))
+    if a.setup_only:
+        return print(f"corn-silo: {len(tasks)} run folders written to {os.path.join(a.out, 'runs')}")
+    done = gc.runner.pool(tasks, a.jobs, "corn-silo")
+    c = gc.checks.Checks(f"corn-silo {os.path.basename(a.out)}")
+    post.study(a.out, {n: r for n, r in done.items() if r}, angles, seeds, size, c)
+    c.report(enforce=a.check)
+
+
+if __name__ == "__main__":
+    shutil.which("liggghts") or print("corn-silo: liggghts not on PATH (install-deps.sh installs it)")
+    gc.cli.main(main)
