@@ -55,26 +55,24 @@ def compute(d, v, t, stem):
     if not all(os.path.exists(f) for f in files.values()):
         return None
     lo, hi, w = window(v)
-    cmd = ["granairCG", "--particles", files["particles"], "--pairs", files["pairs"], "--walls", files["walls"],
-           "--plane-wall", "shaftL", "x", f"{-P.WIDTH / 2:.12g}", "--plane-wall", "shaftR", "x", f"{P.WIDTH / 2:.12g}",
-           "--dt", f"{v['DEM_DT']:.12g}", "--coordinates", "XZ", "--kernel", "gauss", "--width", f"{w:.9g}",
-           "--spacing", f"{w / 2:.9g}", "--min", *(f"{x:.9g}" for x in lo), "--max", *(f"{x:.9g}" for x in hi),
-           "--threads", "1", "--format", "csv", "vti", "--out", stem]
-    gc.runner.run(cmd, d, f"granairCG_t{t:g}")
+    gc.cg.run(d, stem, [("particles", files["particles"]), ("pairs", files["pairs"]), ("walls", files["walls"]),
+                        ("plane-wall", ["shaftL", "x", f"{-P.WIDTH / 2:.12g}"]),
+                        ("plane-wall", ["shaftR", "x", f"{P.WIDTH / 2:.12g}"]),
+                        ("dt", f"{v['DEM_DT']:.12g}"), ("coordinates", "XZ"), ("kernel", "gauss"),
+                        ("width", f"{w:.9g}"), ("spacing", f"{w / 2:.9g}"), ("min", [f"{x:.9g}" for x in lo]),
+                        ("max", [f"{x:.9g}" for x in hi]), ("threads", 1), ("format", ["csv", "vti"])],
+              log=f"granairCG_t{t:g}")
     return stem + ".csv"
 
 
 def read_grid(csv):
-    """The CSV of an XZ run as 2-D arrays [iz, ix] (x fastest or slowest: sorted here)."""
-    s = gc.series.read_csv(csv)
-    xs, zs = np.unique(s["x"]), np.unique(s["z"])
-    ix, iz = np.searchsorted(xs, s["x"]), np.searchsorted(zs, s["z"])
-    grid = {}
-    for k, col in s.items():
-        a = np.full((len(zs), len(xs)), np.nan)
-        a[iz, ix] = col
-        grid[k] = a
-    return xs, zs, grid
+    """The CSV of an XZ run as 2-D arrays [iz, ix] (gc.cg.read gives them in the file's axis order)."""
+    f = gc.cg.read(csv)
+    if set(f["axes"]) != {"x", "z"}:
+        raise gc.CaseError(f"{csv}: expected an XZ grid, found coordinates {f['axes']}")
+    flip = f["axes"] == ("x", "z")
+    grid = {k: (a.T if flip else a) for k, a in f.items() if isinstance(a, np.ndarray) and a.ndim == 2}
+    return f["x"], f["z"], grid
 
 
 def kernel_share_below(u):
@@ -183,19 +181,22 @@ def cfd_orifice(f, b2):
     return f["x"][r[0]], out
 
 
+# the CFD side's columns in profiles() and orifice_numbers()
+CFD_NAMES = dict(solid="cfd_solid_fraction", Us_z="cfd_solid_velocity_z", p="air_pressure", dpdz="air_dpdz",
+                 U_z="air_velocity_z")
+
+
 def profiles(v, grid, f):
     """The CG fields and the CFD fields on the centre line x = 0 (by z) and across the orifice
     plane z = 0 (by x), the CFD's interpolated linearly onto the CG grid's points:
     {"axis": (z, columns), "orifice": (x, columns)}."""
     xs, zs, g = grid
     cg = dict(cg_solid_fraction=g["volume_fraction"], cg_velocity_z=g["velocity_z"], cg_pressure=g["pressure"])
-    names = dict(solid="cfd_solid_fraction", Us_z="cfd_solid_velocity_z", p="air_pressure", dpdz="air_dpdz",
-                 U_z="air_velocity_z")
     out = {}
     for kind, coord, pick, (at, vals) in (("axis", zs, lambda a: a[:, np.argmin(np.abs(xs))], cfd_axis(f)),
                                           ("orifice", xs, lambda a: a[np.argmin(np.abs(zs)), :], cfd_orifice(f, v["B"]))):
         cols = {k: pick(a) for k, a in cg.items()}
-        cols.update({names[k]: np.interp(coord, at, y, left=np.nan, right=np.nan) for k, y in vals.items()})
+        cols.update({CFD_NAMES[k]: np.interp(coord, at, y, left=np.nan, right=np.nan) for k, y in vals.items()})
         out[kind] = (coord, cols)
     return out
 
@@ -209,9 +210,7 @@ def orifice_numbers(v, grid, f):
     m = dict(cg_solid_fraction=g["volume_fraction"][k, slot], cg_velocity_z=g["velocity_z"][k, slot],
              cg_pressure=g["pressure"][k, slot])
     m = {key: float(np.nanmean(y)) for key, y in m.items()}
-    names = dict(solid="cfd_solid_fraction", Us_z="cfd_solid_velocity_z", p="air_pressure", dpdz="air_dpdz",
-                 U_z="air_velocity_z")
-    m.update({names[key]: float(np.mean(y)) for key, y in cfd_orifice(f, v["B"])[1].items()})
+    m.update({CFD_NAMES[key]: float(np.mean(y)) for key, y in cfd_orifice(f, v["B"])[1].items()})
     m["cg_mass_flow_kg_s"] = float(-np.sum(g["momentum_density_z"][k, :]) * (xs[1] - xs[0]) * P.DEPTH)
     return m
 
