@@ -466,7 +466,8 @@ void CoupledRun::run()
         }
     }
     stopSignal_ = ::granair::StopSignal::received(MPI_COMM_WORLD);
-    for (label k = 1; k <= nSteps_ && !stopSignal_; ++k)
+    emptied_ = dem_->nGlobal() == 0;
+    for (label k = 1; k <= nSteps_ && !stopSignal_ && !emptied_; ++k)
     {
         {
             StageTimers::Scope s(timers_, StageTimers::DEM);
@@ -509,15 +510,27 @@ void CoupledRun::run()
         resources_.addStep(series_->last().particles, settings_.couplingInterval);
         stepsDone_ = k;
         stopSignal_ = ::granair::StopSignal::received(MPI_COMM_WORLD);
+        emptied_ = series_->last().particles == 0;
         progress.update
         (
             runTime_.value(), long(dem_->step()), progressExtra(series_->last()), std::cout,
-            k == nSteps_ || stopSignal_
+            k == nSteps_ || stopSignal_ || emptied_
         );
     }
     if (stopSignal_)
     {
         writeStopPoint();
+    }
+    else if (emptied_ && !runTime_.writeTime())
+    {
+        // The fields of the last time, but no restart point: there is
+        // nothing left to continue (and LIGGGHTS could not read zero atoms).
+        StageTimers::Scope s(timers_, StageTimers::Output);
+        if (!air_)
+        {
+            mapVoidFraction();
+        }
+        runTime_.writeNow();
     }
     resources_.stopLoop();
 }
@@ -723,6 +736,15 @@ void CoupledRun::finish()
             << "step to t = " << runTime_.value() << " s, and the fields and a restart point of t = "
             << runTime_.timeName() << " are written: continue with startFrom latestTime.\n"
             << "  Exit code " << ::granair::StopSignal::exitCode(stopSignal_) << ".\n";
+    }
+    else if (emptied_)
+    {
+        os  << "\ngranairFoam: no particles left in the DEM domain at t = " << runTime_.value()
+            << " s, after coupling step " << stepsDone_ << " of " << nSteps_ << " (end time "
+            << runTime_.endTime().value() << " s): the run ends here.\n"
+            << "  The outputs are complete up to that time: postProcessing/timeSeries.{csv,h5} have every "
+            << "step to t = " << runTime_.value() << " s and the fields of t = " << runTime_.timeName()
+            << " are written.\n";
     }
     Info<< os.str().c_str() << endl;
 }

@@ -14,6 +14,8 @@ it complete) with `startFrom startTime; startTime <it>`, so a field folder
 written after it is simply overwritten. Each chunk's log is kept as
 log/granairFoam_<from>-<to>.log; log/granairFoam.log is the last one (its end
 holds the accounting over the whole run: the restart carries the counts on).
+A chunk in which every particle left ends the run (granairFoam stops there,
+without a restart point, and says so in its log): reason "no particles left".
 Older restart points are deleted (the newest two are kept): a point holds the
 whole DEM state, and the fields stay in their time folders.
 """
@@ -50,6 +52,16 @@ def latest_restart(case):
 def _prune(case, keep=2):
     for _, name in _restart_times(case)[:-keep]:
         shutil.rmtree(os.path.join(case, "restart", name), ignore_errors=True)
+
+
+def _emptied(log):
+    """The time granairFoam's log says every particle had left the DEM domain, or None."""
+    key = "granairFoam: no particles left in the DEM domain at t = "
+    with open(log, errors="replace") as fh:
+        for line in fh:
+            if line.startswith(key):
+                return float(line[len(key):].split()[0])
+    return None
 
 
 def record(case):
@@ -94,6 +106,11 @@ def run(case, chunk, finished, t_max, np=1, progress=print):
         rec["chunks"].append({"from": t0, "to": t1, "cpu_s": cpu, "wall_s": time.time() - start})
         shutil.copyfile(last, os.path.join(case, "log", f"granairFoam_{t0:g}-{t1:g}.log"))
         got = latest_restart(case)
+        emptied = _emptied(last)
+        if emptied is not None:         # every particle left: a normal end (no restart point)
+            rec["reason"], rec["t_end"] = f"no particles left at t = {emptied:g} s", emptied
+            _save(case, rec)
+            break
         if not got or got[0] < t1 - 1e-9:
             raise CaseError(f"{case}: granairFoam ended at t = {t1:g} s without a restart point there "
                             f"(is the chunk {chunk:g} s a whole number of write intervals?)")
