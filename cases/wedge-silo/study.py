@@ -189,8 +189,8 @@ def do_run(a, b, air, work):
     if a.whole:
         every = v["WRITE_INTERVAL"]
         chunk = every * max(1, math.ceil(a.chunk / every - 1e-9))
-        rec = gc.chunks.run(d, chunk, finished, v["T_END"], np=a.np,
-                            progress=lambda m: print(f"wedge-silo: {m}", flush=True))
+        rec = gc.chunks.foam(d, chunk, finished, v["T_END"], np=a.np,
+                             progress=lambda m: print(f"wedge-silo: {m}", flush=True))
         print(f"wedge-silo: {name} finished ({rec['reason']}), {rec['cpu_s']:.0f} s CPU in "
               f"{len(rec['chunks'])} chunk(s)", flush=True)
         cpu = rec["cpu_s"]

@@ -4,7 +4,7 @@
     foam        OpenFOAM dictionaries and fields: read a field, set an entry, time folders
     template    the one template mechanism: a case's template/ with @KEY@ placeholders
     runner      run a step (log, mpirun, CPU time), a job pool, stop a run on a condition
-    chunks      long granairFoam runs in chunks from restart points, resumable, until finished
+    chunks      long runs of granairFoam or LIGGGHTS in chunks, each from the last restart, resumable
     dem         LIGGGHTS: loose packing, data files, STL walls, dumps, mesh VTK, the discharge balance
     series      time series: CSV in and out, window means, steady rates
     powder      the discharge of a silo or hopper: DEM and continuum runs to the level contract

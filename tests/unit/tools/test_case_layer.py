@@ -286,33 +286,86 @@ class CG(unittest.TestCase):
                 gc.cg.read(os.path.join(d, "bad.csv"))
 
 
-class Chain(unittest.TestCase):
-    def test_segments_resume_and_need_their_restart(self):
-        """A fake `liggghts` that writes restart_out: the second call skips the finished segments."""
-        with tempfile.TemporaryDirectory() as d:
-            fake = os.path.join(d, "bin", "liggghts")
-            write(fake, "#!/bin/sh\nwhile [ $# -gt 0 ]; do [ \"$1\" = -var ] && [ \"$2\" = restart_out ] && "
-                  "echo \"$@\" > \"$3\"; shift; done\n")
-            os.chmod(fake, 0o755)
-            old = os.environ["PATH"]
-            os.environ["PATH"] = os.path.dirname(fake) + os.pathsep + old
-            try:
-                case = os.path.join(d, "case")
-                write(os.path.join(case, "fill.restart"), "x")
-                segs = [dict(nsteps=10), dict(nsteps=20)]
-                cpu, skipped = gc.runner.chain(case, "in.seg", segs, "fill.restart", label="test")
-                self.assertEqual(skipped, 0)
-                self.assertTrue(os.path.exists(os.path.join(case, "restart", "segment_2.restart")))
-                self.assertFalse(os.path.exists(os.path.join(case, "restart", "segment_1.restart")))
-                self.assertEqual(gc.runner.chain_cost(case)[2], 2)
-                cpu, skipped = gc.runner.chain(case, "in.seg", segs + [dict(nsteps=30)], "fill.restart", label="test")
-                self.assertEqual(skipped, 2)
-                self.assertEqual(gc.runner.chain_cost(case)[2], 3)
-                os.remove(os.path.join(case, "restart", "segment_3.restart"))
-                with self.assertRaisesRegex(CaseError, "needs the restart"):
-                    gc.runner.chain(case, "in.seg", segs + [dict(nsteps=30)] * 2, "fill.restart", label="test")
-            finally:
-                os.environ["PATH"] = old
+class FakeProgram:
+    """A shell script on PATH in place of a program (liggghts, granairFoam)."""
+    def __init__(self, d, name, body):
+        self.path = os.path.join(d, "bin", name)
+        write(self.path, "#!/bin/sh\n" + body)
+        os.chmod(self.path, 0o755)
+
+    def __enter__(self):
+        self.old = os.environ["PATH"]
+        os.environ["PATH"] = os.path.dirname(self.path) + os.pathsep + self.old
+
+    def __exit__(self, *exc):
+        os.environ["PATH"] = self.old
+
+
+# writes the file after `-var restart_out`, and the value of `-var n` to out_<seg>.txt
+FAKE_LIGGGHTS = ('while [ $# -gt 0 ]; do [ "$1" = -var ] && [ "$2" = restart_out ] && echo "$@" > "$3"; '
+                 '[ "$1" = -var ] && [ "$2" = n ] && n=$3; [ "$1" = -var ] && [ "$2" = seg ] && s=$3; shift; done\n'
+                 'echo $n > out_$s.txt\n')
+# a restart point at the controlDict's endTime, as granairFoam writes one
+FAKE_FOAM = ('t=$(sed -n "s/^endTime *\\(.*\\);/\\1/p" system/controlDict)\n'
+             'mkdir -p restart/$t && touch restart/$t/coupling && echo "to $t"\n')
+
+
+class Chunks(unittest.TestCase):
+    def test_liggghts_segments_resume_and_need_their_restart(self):
+        """The second call skips the finished segments; a removed restart stops it with a message."""
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "liggghts", FAKE_LIGGGHTS):
+            case = os.path.join(d, "case")
+            write(os.path.join(case, "fill.restart"), "x")
+            segs = [dict(n=10), dict(n=20)]
+            rec = gc.chunks.liggghts(case, "in.seg", segs, "fill.restart", label="test", progress=lambda s: None)
+            self.assertEqual((rec["ran"], rec["reason"]), (2, "2 segments"))
+            self.assertTrue(os.path.exists(os.path.join(case, "restart", "segment_2.restart")))
+            self.assertFalse(os.path.exists(os.path.join(case, "restart", "segment_1.restart")))
+            self.assertEqual(gc.chunks.cost(case, "segment")[2], 2)
+            # the old names
+            cpu, skipped = gc.runner.chain(case, "in.seg", segs + [dict(n=30)], "fill.restart", label="test")
+            self.assertEqual(skipped, 2)
+            self.assertEqual(gc.runner.chain_cost(case)[2], 3)
+            os.remove(os.path.join(case, "restart", "segment_3.restart"))
+            with self.assertRaisesRegex(CaseError, "needs the restart"):
+                gc.chunks.liggghts(case, "in.seg", segs + [dict(n=30)] * 2, "fill.restart", progress=lambda s: None)
+
+    def test_liggghts_segments_from_a_function_with_what_they_collect(self):
+        """segments(k, rec) sees the finished entries; collect() adds to each; old markers are read."""
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "liggghts", FAKE_LIGGGHTS):
+            case = os.path.join(d, "case")
+            write(os.path.join(case, "fill.restart"), "x")
+            write(os.path.join(case, "restart", "seg_1.done"), "cpu_s = 1.5\nwall_s = 2.0\n")
+            write(os.path.join(case, "restart", "seg_1.restart"), "x")
+
+            def plan(k, rec):
+                return None if k > 3 else dict(n=sum(c["n"] for c in rec["chunks"][1:]) + k)
+
+            def collect(c, k):
+                return dict(n=int(read(os.path.join(c, f"out_{k}.txt"))))
+            rec = gc.chunks.liggghts(case, "in.seg", plan, "fill.restart", "seg", collect=collect,
+                                     progress=lambda s: None)
+            self.assertEqual([c["k"] for c in rec["chunks"]], [1, 2, 3])
+            self.assertEqual(rec["chunks"][0]["cpu_s"], 1.5)          # from the marker
+            self.assertEqual([c.get("n") for c in rec["chunks"]], [None, 2, 5])
+            self.assertEqual(rec["ran"], 2)
+
+    def test_foam_chunks_to_finished_and_to_a_later_t_max(self):
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "granairFoam", FAKE_FOAM):
+            case = os.path.join(d, "case")
+            write(os.path.join(case, "system", "controlDict"),
+                  "startFrom latestTime;\nstartTime 0;\nendTime 1;\n")
+            rec = gc.chunks.foam(case, 0.25, lambda c: None, 0.5, progress=lambda s: None)
+            self.assertEqual([(c["from"], c["to"]) for c in rec["chunks"]], [(0.0, 0.25), (0.25, 0.5)])
+            self.assertEqual((rec["reason"], rec["t_end"]), ("t_max = 0.5 s", 0.5))
+            self.assertIn("startTime 0.25;\nendTime 0.5;", read(os.path.join(case, "system", "controlDict")))
+            self.assertTrue(os.path.exists(os.path.join(case, "log", "granairFoam_0.25-0.5.log")))
+            # a later t_max goes on; finished() ends it; the newest two restart points are kept
+            empty = lambda c: "empty" if gc.chunks.latest_restart(c)[0] >= 1 else None   # noqa: E731
+            rec = gc.chunks.foam(case, 0.25, empty, 2.0, progress=lambda s: None)
+            self.assertEqual((rec["ran"], rec["reason"], rec["t_end"]), (2, "empty", 1.0))
+            self.assertEqual(sorted(os.listdir(os.path.join(case, "restart"))), ["0.75", "1"])
+            self.assertEqual(gc.chunks.foam(case, 0.25, empty, 2.0)["ran"], 0)
 
 
 if __name__ == "__main__":
