@@ -286,6 +286,22 @@ class CG(unittest.TestCase):
                 gc.cg.read(os.path.join(d, "bad.csv"))
 
 
+class Numerics(unittest.TestCase):
+    def test_roots_minima_block_errors_field_lists(self):
+        self.assertAlmostEqual(gc.numerics.bisect(lambda x: x * x - 2, 0, 2), math.sqrt(2), places=14)
+        self.assertAlmostEqual(gc.numerics.bisect(lambda x: 1 / x - 1e3, 1e-9, 1, increasing=False, geometric=True),
+                               1e-3, places=14)
+        self.assertAlmostEqual(gc.numerics.golden(lambda x: (x - 0.3) ** 2, 0, 1), 0.3, places=7)
+        self.assertAlmostEqual(gc.numerics.golden(lambda x: math.log(x / 0.02) ** 2, 1e-4, 10, log=True), 0.02, places=7)
+        # block errors: 4 blocks of two snapshots; block means 1, 2, 3, 4 -> se = std / 2
+        tables = [dict(v=np.array([x]), axes=("z",)) for x in (1, 1, 2, 2, 3, 3, 4, 4)]
+        se = gc.series.block_errors(tables, lambda t: dict(m=float(t["v"][0])), ["m"], 4)
+        self.assertAlmostEqual(se["m"], np.std([1, 2, 3, 4], ddof=1) / 2)
+        self.assertTrue(math.isnan(gc.series.block_errors(tables[:1], lambda t: dict(m=1.0), ["m"])["m"]))
+        self.assertEqual(gc.foam.nonuniform([1.0, 0.0]), "nonuniform List<scalar> 2 (1 0)")
+        self.assertEqual(gc.foam.nonuniform([(0.5, 0, 0)]), "nonuniform List<vector> 1 ((0.5 0 0))")
+
+
 class FakeProgram:
     """A shell script on PATH in place of a program (liggghts, granairFoam)."""
     def __init__(self, d, name, body):
