@@ -28,7 +28,6 @@ against the top wall's traction (force / area), sigma_xz uniform across the
 bulk, mu at the lowest I in the quasi-static band of frictional spheres
 (parameters.py, with sources).
 """
-import glob
 import json
 import math
 import os
@@ -214,8 +213,7 @@ def post_run(run, rv):
     lo, hi = z_bot + 0.5 * wt + P.BAND * d, z_top - 0.5 * wt - P.BAND * d
     mean = gc.cg.read(stem + ".csv")
     res = bulk(mean, lo, hi, rv["RHO"])
-    snaps = sorted(glob.glob(stem + "_*.csv"), key=lambda p: int(p.rsplit("_", 1)[1][:-4]))
-    tables = [gc.cg.read(s) for s in snaps if int(s.rsplit("_", 1)[1][:-4]) * rv["DEM_DT"] >= t_from - 1e-12]
+    tables = [gc.cg.read(p) for step, p in gc.dem.numbered(stem + "_*.csv") if step * rv["DEM_DT"] >= t_from - 1e-12]
     se = gc.series.block_errors(tables, lambda t: bulk(t, lo, hi, rv["RHO"]),
                                 ("I", "mu", "mu_J2", "mu_xz", "phi", "P", "sigma_xz", "sigma_zz"), BLOCKS)
     res.update({f"{k}_se": v for k, v in se.items()})

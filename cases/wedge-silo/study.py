@@ -256,15 +256,8 @@ def post_run(d, res, name):
         first = np.argmax(s["discharged_kg"] > 0)        # "while discharging": from the first discharged particle on
         out["outlet_p_mean_discharging_Pa"] = float(np.mean(s["outlet_p_Pa"][first:]))
         # the air volume balance of the silo above the orifice up to the last field time
-        # (monitors: flux along +z; the pore volume sum(eps V) of the cells above z = 0)
-        te = out["balance_time_s"] = out["field_times"][-1]
-        k, dt = t <= te + 1e-9, gc.series.step_lengths(t)
-        z, vol = (gc.foam.read_field(os.path.join(d, "0", f)) for f in ("Cz", "V"))
-        eps = [gc.foam.read_field(os.path.join(gc.foam.time_dir(d, x), "voidfraction"), len(z)) for x in (0, te)]
-        out["air_in_top_m3"] = float(-np.sum((s["top_air_kg_s"] * dt)[k]) / P.AIR_RHO)
-        out["air_out_orifice_m3"] = float(-np.sum((s["outlet_air_kg_s"] * dt)[k]) / P.AIR_RHO)
-        out["pore_growth_m3"] = float(np.sum(((eps[1] - eps[0]) * vol)[z > 0]))
-        out["powder_out_m3"] = float(s["discharged_kg"][k][-1] / v["DEPTH_SCALE"] / P.RHO_P)
+        out["balance_time_s"] = out["field_times"][-1]
+        out.update(gc.powder.air_balance(d, s, out["balance_time_s"], P.AIR_RHO, P.RHO_P, v["DEPTH_SCALE"]))
     out["cg"], out["cg_png"] = cg.run(d, v, res, name, out["field_times"])
     for c in out["cg"]:     # the discharge counter's rate (0.1 s window) next to the CG flux through the orifice
         c["orifice"]["series_mass_flow_kg_s"] = float(np.interp(c["t"], t, s["mass_flow_kg_s"]))

@@ -217,6 +217,17 @@ class Dem(unittest.TestCase):
             np.testing.assert_array_equal(back["fields"]["p_Pa"], [1.5, 2.5])
             with self.assertRaisesRegex(CaseError, "field q has 1 values for 2 triangles"):
                 gc.dem.write_mesh_vtk(os.path.join(d, "x.vtk"), m["points"], np.array(m["cells"]), {"q": [1]})
+            # the wall loads of a stress dump (normal, shear, area); without the shear field: named
+            write(os.path.join(d, "walls_20.vtk"), read(os.path.join(d, "m.vtk")).replace(
+                "FIELD FieldData 2", "FIELD FieldData 3").replace("meshid", "shear_stress_average 1 2 double\n-1 2\nmeshid"))
+            normal, shear, area = gc.dem.wall_loads(os.path.join(d, "walls_20.vtk"))
+            np.testing.assert_array_equal(np.c_[normal, shear, area], [[10.5, 1, 0.5], [0, 2, 0.5]])
+            with self.assertRaisesRegex(CaseError, "shear_stress_average"):
+                gc.dem.wall_loads(os.path.join(d, "m.vtk"))
+            write(os.path.join(d, "walls_3.vtk"), "")
+            write(os.path.join(d, "walls_fill.vtk"), "")
+            self.assertEqual(gc.dem.numbered(os.path.join(d, "walls_*.vtk")),
+                             [(3, os.path.join(d, "walls_3.vtk")), (20, os.path.join(d, "walls_20.vtk"))])
 
     def test_dump_and_balance(self):
         with tempfile.TemporaryDirectory() as d:
