@@ -170,17 +170,14 @@ def do_run(a, b, air, work):
     v = numbers(a, b, air)
     resume = a.whole and not a.setup_only and gc.chunks.record(d)["chunks"]
     if resume:
-        with open(os.path.join(d, "case.json")) as fh:
-            if json.load(fh) != json.loads(json.dumps(v)):
-                raise gc.CaseError(f"{d}: case.json differs from this study's numbers; remove the folder to start again")
+        gc.template.check_values(os.path.join(d, "case.json"), v)
     else:
         shutil.rmtree(d, ignore_errors=True)
         gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",
                                                                       "dem/in.materials"])
         hopper_walls(v, d)
         os.makedirs(os.path.join(d, "dem", "post"))
-        with open(os.path.join(d, "case.json"), "w") as fh:
-            json.dump(v, fh, indent=1)
+        gc.template.save_values(os.path.join(d, "case.json"), v)
     if a.setup_only:
         return {}
     if not resume:

@@ -10,6 +10,7 @@
     read_mesh_vtk(path)                 a `dump mesh/vtk` file: points, triangles, per-element fields
     wall_loads(path)                    its normal and shear stress and area per element (LIGGGHTS mesh stress)
     numbered(pattern)                   [(step, path)] of numbered outputs (walls_*.vtk), by step
+    merge_dumps(paths, out)             the snapshots of a chunked run's dump files in one, each step once
     write_mesh_vtk(path, ...)           triangles with per-element fields as legacy VTK (ParaView)
     discharge_balance(log)              the particle accounting granairFoam prints at the end
 """
@@ -157,6 +158,25 @@ def read_dumps(path):
         out.append((step, {c: data[:, k] for k, c in enumerate(cols)}))
         i = j + 1 + n
     return out
+
+
+def merge_dumps(paths, out):
+    """The snapshots of several `dump custom` files (the chunks of a run: the first step of
+    one is the last of the one before) in one file, each step once, in order; a snapshot
+    a stopped chunk cut short is left out. Returns (out, number of snapshots)."""
+    seen = {}
+    for path in paths:
+        with open(path) as fh:
+            lines = fh.read().splitlines()
+        starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")] + [len(lines)]
+        for a, b in zip(starts[:-1], starts[1:]):
+            n = int(lines[a + 3])
+            if b - a >= 9 + n:
+                seen.setdefault(int(lines[a + 1]), lines[a:a + 9 + n])
+    with open(out, "w") as fh:
+        for step in sorted(seen):
+            fh.write("\n".join(seen[step]) + "\n")
+    return out, len(seen)
 
 
 def numbered(pattern):

@@ -126,6 +126,15 @@ def window_means(t, dt, columns, width, keep_last=0.0, tol=0.0):
     return np.array(centres), [np.array(m) for m in means]
 
 
+def mean_sd(values):
+    """(mean, sample standard deviation (n - 1)) of the finite values (None and NaN left
+    out): the spread of a result over repeated runs (seeds); NaN SD for one value."""
+    x = np.array([v for v in values if v is not None and np.isfinite(v)], dtype=float)
+    if not len(x):
+        return float("nan"), float("nan")
+    return float(x.mean()), float(x.std(ddof=1)) if len(x) > 1 else float("nan")
+
+
 def block_errors(tables, fn, keys, blocks=5):
     """Standard errors of the results of fn by block averaging: the snapshots
     `tables` (dicts of arrays, in time order) in `blocks` consecutive blocks,

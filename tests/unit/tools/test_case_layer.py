@@ -36,6 +36,13 @@ class Template(unittest.TestCase):
         text = "pFinal { $p; } print \"${vrms} $n\" a@b.c"
         self.assertEqual(gc.template.fill(text, {}), text)
 
+    def test_saved_values_must_match_on_resume(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = gc.template.save_values(os.path.join(d, "run", "case.json"), dict(A=1, B=(1, 2), C="x"))
+            gc.template.check_values(path, dict(A=1, B=[1, 2], C="x"))          # a tuple is saved as a list
+            with self.assertRaisesRegex(CaseError, r"other numbers \(A: 1 vs 2, D: None vs 0\); start again"):
+                gc.template.check_values(path, dict(A=2, B=[1, 2], C="x", D=0), "start again")
+
     def test_render_copies_a_folder_or_part_of_it(self):
         with tempfile.TemporaryDirectory() as d:
             write(os.path.join(d, "t", "system", "controlDict"), "deltaT @DT:g@;\n")
@@ -194,6 +201,12 @@ class Dem(unittest.TestCase):
             self.assertEqual([s for s, _ in steps], [0, 10, 20])
             np.testing.assert_array_equal(steps[0][1]["z"], [0.5, 0.25])
             self.assertEqual(len(steps[1][1]["id"]), 0)
+            # two chunks' dumps (the second starts where the first ended) merged, each step once
+            write(os.path.join(d, "cv2.dump"), snap.format(20, 1) + "8 0.9\n" + snap.format(40, 1) + "9 0.3\n")
+            out, n = gc.dem.merge_dumps([os.path.join(d, "cv.dump"), os.path.join(d, "cv2.dump")], os.path.join(d, "all"))
+            merged = gc.dem.read_dumps(out)
+            self.assertEqual((n, [s for s, _ in merged]), (4, [0, 10, 20, 40]))
+            self.assertEqual(float(merged[2][1]["z"][0]), 0.1)         # the first chunk's copy of step 20
             # a dump local (the force chains: compute pair/gran/local)
             write(os.path.join(d, "pairs.dump"), "ITEM: TIMESTEP\n5\nITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS ff ff ff\n"
                   "0 1\n0 1\n0 1\nITEM: ENTRIES c_p[1] c_p[2] \n0.5 -2.5\n")
@@ -309,6 +322,9 @@ class Numerics(unittest.TestCase):
         se = gc.series.block_errors(tables, lambda t: dict(m=float(t["v"][0])), ["m"], 4)
         self.assertAlmostEqual(se["m"], np.std([1, 2, 3, 4], ddof=1) / 2)
         self.assertTrue(math.isnan(gc.series.block_errors(tables[:1], lambda t: dict(m=1.0), ["m"])["m"]))
+        m, sd = gc.series.mean_sd([1.0, None, 3.0, float("nan")])
+        self.assertEqual((m, sd), (2.0, math.sqrt(2)))
+        self.assertTrue(math.isnan(gc.series.mean_sd([5.0])[1]))
         self.assertEqual(gc.foam.nonuniform([1.0, 0.0]), "nonuniform List<scalar> 2 (1 0)")
         self.assertEqual(gc.foam.nonuniform([(0.5, 0, 0)]), "nonuniform List<vector> 1 ((0.5 0 0))")
 
