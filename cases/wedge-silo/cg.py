@@ -252,7 +252,6 @@ def picture(d, v, rows, path, name):
     maps = ["CG solid fraction", "1 - air void fraction", "CG |velocity| [m/s]", "CG pressure [Pa]",
             "air p - ambient [Pa]", "air dp/dz [Pa/m]"]
     for i, (r, (xs, zs, g), f, sp) in enumerate(zip(rows, grids, fields, speed)):
-        ext = [xs[0] * 1e3, xs[-1] * 1e3, zs[0] * 1e3, zs[-1] * 1e3]
         for j, label in enumerate(maps):
             ax = axes[2 * i][j]
             ax.set(xlim=xlim, ylim=zlim, aspect="equal")
@@ -268,7 +267,7 @@ def picture(d, v, rows, path, name):
             else:
                 a, cmap, lim = {0: (g["volume_fraction"], "viridis", (0, 0.65)), 2: (sp, "magma", (0, vmax)),
                                 3: (g["pressure"], "cividis", (0, pmax))}[j]
-                art = ax.imshow(a, origin="lower", extent=ext, cmap=cmap, vmin=lim[0], vmax=lim[1], interpolation="nearest")
+                art = gc.plots.grid_map(ax, xs, zs, a, cmap, lim)
             fig.colorbar(art, ax=ax, fraction=0.05, pad=0.02).ax.tick_params(labelsize=6)
             if j == 0:
                 ax.set_ylabel("z [mm]", fontsize=7)

@@ -4,6 +4,7 @@
     field_panels(path, title, cells, rows, xlim, ylim)   cell fields (polygons) at several times
     case_fields(path, title, case, times, rows, ...)     the same from a plane OpenFOAM case
     cell_map(ax, cells, values, cmap, lim)               one panel of cell polygons coloured by a field
+    grid_map(ax, x, z, values, cmap, lim)                one panel of a grid field [i_z, i_x] (CG fields)
     save(fig, path)
 """
 import os
@@ -33,6 +34,13 @@ def cell_map(ax, cells, values, cmap, lim):
     pc.set_clim(*lim)
     ax.add_collection(pc)
     return pc
+
+
+def grid_map(ax, x, z, values, cmap, lim, scale=1e3):
+    """A field on a regular grid (values [i_z, i_x] at the points x, z; gc.cg.read(csv,
+    order=("z", "x"))) on ax, each point a pixel, lengths times scale (mm); returns the image."""
+    ext = [x[0] * scale, x[-1] * scale, z[0] * scale, z[-1] * scale]
+    return ax.imshow(values, origin="lower", extent=ext, cmap=cmap, vmin=lim[0], vmax=lim[1], interpolation="nearest")
 
 
 def field_panels(path, title, cells, rows, xlim, ylim):
