@@ -5,6 +5,7 @@
     mesh(case, np)                                   blockMesh (+ decomposePar for np > 1)
     pool([(name, fn, args), ...], jobs)              independent jobs, a line per finished one
     run(cmd, case, stop_when=done)                   stop an OpenFOAM run (stopAt writeNow) once done()
+    chain, chain_cost                                the old names of chunks.liggghts and chunks.cost
 
 Every step writes case/log/<name>.log; a failure raises CaseError with the
 command, the folder and the last lines of its log. CPU time is user + system
