@@ -107,11 +107,6 @@ def next_prime(n):
     return n
 
 
-def liggghts(inp, tag):
-    """LIGGGHTS on one input; its screen output goes to the step's log (log/<tag>.log)."""
-    return ["liggghts", "-in", inp, "-log", f"log/log.{tag}"]
-
-
 def read_state(run):
     """The run's progress: the fill (post/fill.json) and the discharge chunks (log/discharge.json,
     gc.chunks); None before the fill is done."""
@@ -148,7 +143,7 @@ def simulate(name, run, v):
             os.remove(os.path.join(run, "post", f))
         shutil.rmtree(os.path.join(run, "restart"), ignore_errors=True)     # and the chunks of an earlier fill
         gc.runner.clean(os.path.join(run, "log"))
-        cpu = gc.runner.run(liggghts("dem/in.fill", "fill"), run, "fill")
+        cpu = gc.runner.liggghts(run, "dem/in.fill", "fill", "log/log.fill", screen=False)   # the screen in log/fill.log
         with open(os.path.join(run, "log", "log.fill")) as fh:
             settled = [ln.strip() for ln in fh if ln.startswith("granair fill: settled")]
         if not settled:

@@ -157,8 +157,7 @@ def sweep(name, a, runs):
 
 def liggghts(run, script):
     # the run's own folder: the templates name dem/..., post/... relative to it
-    return gc.runner.run(["liggghts", "-in", f"dem/{script}", "-log", "log/log.liggghts", "-screen",
-                          "log/screen.liggghts"], run, "liggghts")
+    return gc.runner.liggghts(run, f"dem/{script}", "liggghts", "log/log.liggghts", "log/screen.liggghts")
 
 
 # --- post-processing --------------------------------------------------------------

@@ -144,8 +144,7 @@ def do_fill(a, b, work):
     if a.setup_only:
         return {}
     t0 = time.time()
-    cpu = gc.runner.run(["liggghts", "-in", "dem/in.fill", "-log", "log/log.liggghts", "-screen", "log/screen.liggghts"],
-                        d, "fill", np=a.fill_np, parallel=False)
+    cpu = gc.runner.liggghts(d, "dem/in.fill", "fill", "log/log.liggghts", "log/screen.liggghts", np=a.fill_np)
     return dict(cpu_s=cpu, wall_s=time.time() - t0)
 
 

@@ -186,10 +186,7 @@ def liggghts(case, script, segments, first, name="segment", label="granair", col
             raise CaseError(f"{case}: segment {k} needs the restart {src}, which does not exist "
                             f"(a finished segment's restart was removed: run again from a clean folder)")
         tmp = restart(k) + ".part"
-        cmd = ["liggghts", "-in", script, "-log", f"log/{name}_{k}.liggghts", "-screen", f"log/{name}_{k}.screen"]
-        for key, v in dict(values, seg=k, restart_in=src, restart_out=tmp).items():
-            cmd += ["-var", str(key), str(v)]
-        cpu = runner.run(cmd, case, f"{name}_{k}", parallel=False)
+        cpu = runner.liggghts(case, script, f"{name}_{k}", var=dict(values, seg=k, restart_in=src, restart_out=tmp))
         if not os.path.exists(os.path.join(case, tmp)):
             raise CaseError(f"{case}: segment {k} ended without writing {tmp} (does {script} end with "
                             f"`write_restart ${{restart_out}}`?)")

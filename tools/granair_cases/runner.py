@@ -4,6 +4,7 @@
     run(["granairFoam"], case, np=2)                 mpirun -np 2 granairFoam -parallel
     mesh(case, np)                                   blockMesh (+ decomposePar for np > 1)
     pool([(name, fn, args), ...], jobs)              independent jobs, a line per finished one
+    liggghts(case, "dem/in.fill", "fill")            a stand-alone LIGGGHTS stage (its log and screen in log/)
     run(cmd, case, stop_when=done)                   stop an OpenFOAM run (stopAt writeNow) once done()
     chain, chain_cost                                the old names of chunks.liggghts and chunks.cost
 
@@ -78,6 +79,20 @@ def run(cmd, cwd, log=None, np=1, parallel=True, stop_when=None, poll=1.0):
         raise CaseError(f"'{' '.join(cmd)}' failed in {cwd} (exit {code}); last lines of {path}:\n"
                         + _tail(path))
     return usage.ru_utime + usage.ru_stime
+
+
+def liggghts(case, script, step, log=None, screen=None, np=1, var=()):
+    """A stand-alone LIGGGHTS stage: `liggghts -in script -log <log> -screen <screen>` in
+    case, LIGGGHTS' log at `log` (default log/<step>.liggghts), its screen output at
+    `screen` (default log/<step>.screen; False: into the step's log, log/<step>.log),
+    `-var name value` for each item of var (a dict or pairs); under mpirun for np > 1.
+    Returns the CPU seconds."""
+    cmd = ["liggghts", "-in", script, "-log", log or f"log/{step}.liggghts"]
+    if screen is not False:
+        cmd += ["-screen", screen or f"log/{step}.screen"]
+    for key, value in (var.items() if isinstance(var, dict) else var):
+        cmd += ["-var", str(key), str(value)]
+    return run(cmd, case, step, np=np, parallel=False)
 
 
 def chain(case, script, segments, first, name="segment", label="granair"):
