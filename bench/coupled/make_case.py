@@ -18,6 +18,9 @@ The spheres start just touching (no overlap), so in the first coupling steps
 the column compresses under gravity and rings, the same way with and without
 air (the fluid force is small).
 
+The case is template/ (ordinary OpenFOAM dictionaries and a LIGGGHTS script)
+filled by gc.template (docs/cases.md).
+
     make_case.py --out DIR --particles N [--air on|off|forces-off] [--steps S]
                  [--np P] [--vtk-interval T]
     make_case.py --out DIR --width W --bed-height H [--box-height B] ...
@@ -40,12 +43,13 @@ import json
 import math
 import os
 
+import granair_cases as gc
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 D = 1e-3  # particle diameter [m]
 DT_DEM = 1e-5  # [s]
 COUPLING_INTERVAL = 50
 U_IN = 0.2  # superficial air velocity [m/s]
-
-FOAM_HEADER = "FoamFile {{ version 2.0; format ascii; class {cls}; object {obj}; }}\n"
 
 
 def column_size(n):
@@ -53,12 +57,6 @@ def column_size(n):
     w = max(3, 3 * round((n / 2.0) ** (1.0 / 3.0) / 3.0))
     h = max(3, 3 * round(n / (w * w) / 3.0))
     return w, h
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def make_case(out, particles, air, steps, np_, width=None, bed_height=None, box_height=None, vtk_interval=None):
@@ -79,115 +77,15 @@ def make_case(out, particles, air, steps, np_, width=None, bed_height=None, box_
     n_actual = w * w * h
     end_time = steps * COUPLING_INTERVAL * DT_DEM
 
-    write(os.path.join(out, "system/blockMeshDict"), FOAM_HEADER.format(cls="dictionary", obj="blockMeshDict") + f"""
-// {w} x {w} x {hb} particle diameters, cells of 3 diameters
-convertToMeters 1;
-vertices ( (0 0 0) ({lx} 0 0) ({lx} {lx} 0) (0 {lx} 0) (0 0 {lz}) ({lx} 0 {lz}) ({lx} {lx} {lz}) (0 {lx} {lz}) );
-blocks ( hex (0 1 2 3 4 5 6 7) ({nx} {nx} {nz}) simpleGrading (1 1 1) );
-boundary
-(
-    walls {{ type wall; faces ( (0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) ); }}
-    bottom {{ type patch; faces ( (0 3 2 1) ); }}
-    top {{ type patch; faces ( (4 5 6 7) ); }}
-);
-""")
-    write(os.path.join(out, "system/controlDict"), FOAM_HEADER.format(cls="dictionary", obj="controlDict") + f"""
-application granairFoam;
-startFrom startTime; startTime 0; stopAt endTime; endTime {end_time:.10g}; deltaT {COUPLING_INTERVAL * DT_DEM:.10g};
-// No field output inside the measured steps (the benchmark times the coupling).
-writeControl timeStep; writeInterval 1000000; purgeWrite 0; writeFormat binary; writePrecision 8;
-timeFormat general; timePrecision 8; runTimeModifiable false;
-""")
-    write(os.path.join(out, "system/fvSchemes"), FOAM_HEADER.format(cls="dictionary", obj="fvSchemes") + """
-ddtSchemes { default Euler; }
-gradSchemes { default Gauss linear; }
-divSchemes { default Gauss linear; div(epsPhi,U) Gauss limitedLinearV 1; }
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes { default corrected; }
-""")
-    write(os.path.join(out, "system/fvSolution"), FOAM_HEADER.format(cls="dictionary", obj="fvSolution") + """
-solvers
-{
-    p { solver PCG; preconditioner DIC; tolerance 1e-8; relTol 0; }
-    pFinal { $p; relTol 0; }
-    "(U|UFinal)" { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8; relTol 0; }
-}
-PIMPLE { nOuterCorrectors 1; nCorrectors 2; nNonOrthogonalCorrectors 0; momentumPredictor no; pRefCell 0; pRefValue 0; }
-""")
-    write(os.path.join(out, "system/decomposeParDict"), FOAM_HEADER.format(cls="dictionary", obj="decomposeParDict") + f"""
-numberOfSubdomains {np_};
-method simple;
-coeffs {{ n ({np_} 1 1); }}
-""")
-    write(os.path.join(out, "constant/transportProperties"), FOAM_HEADER.format(cls="dictionary", obj="transportProperties") + """
-rho 1.2;      // air density [kg/m3]
-mu 1.8e-5;    // air dynamic viscosity [Pa s]
-""")
-    output = f"output {{ vtkInterval {vtk_interval:.10g}; }}\n" if vtk_interval else ""
-    forces = "forces { drag off; pressureGradient off; buoyancy off; }\n" if air == "forces-off" else ""
-    write(os.path.join(out, "constant/couplingProperties"), FOAM_HEADER.format(cls="dictionary", obj="couplingProperties") + f"""
-couplingInterval {COUPLING_INTERVAL};
-air {"off" if air == "off" else "on"};
-{forces}gravity (0 0 -9.81);
-drag {{ type ErgunGidaspow; }}
-voidFraction {{ type centre; }}
-monitors {{ outlet {{ type patch; patch top; normal (0 0 1); }} }}
-{output}""")
-    write(os.path.join(out, "0/U"), FOAM_HEADER.format(cls="volVectorField", obj="U") + f"""
-dimensions [0 1 -1 0 0 0 0];
-internalField uniform (0 0 {U_IN});
-boundaryField
-{{
-    walls {{ type slip; }}
-    bottom {{ type fixedValue; value uniform (0 0 {U_IN}); }}
-    top {{ type zeroGradient; }}
-}}
-""")
-    write(os.path.join(out, "0/p"), FOAM_HEADER.format(cls="volScalarField", obj="p") + """
-dimensions [1 -1 -2 0 0 0 0];
-internalField uniform 0;
-boundaryField
-{
-    walls { type zeroGradient; }
-    bottom { type zeroGradient; }
-    top { type fixedValue; value uniform 0; }
-}
-""")
-    write(os.path.join(out, "dem/in.liggghts"), f"""# benchmark column: {w} x {w} x {h} spheres of d = {D} m on a simple cubic lattice
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-units           si
-processors      {np_} 1 1
-region          domain block 0 {lx} 0 {lx} 0 {lz} units box
-create_box      1 domain
-neighbor        {0.2 * D} bin
-neigh_modify    delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
-pair_style      gran model hertz tangential history
-pair_coeff      * *
-timestep        {DT_DEM}
-fix gravi all gravity 9.81 vector 0.0 0.0 -1.0
-fix wz  all wall/gran model hertz tangential history primitive type 1 zplane 0.0
-fix wx0 all wall/gran model hertz tangential history primitive type 1 xplane 0.0
-fix wx1 all wall/gran model hertz tangential history primitive type 1 xplane {lx}
-fix wy0 all wall/gran model hertz tangential history primitive type 1 yplane 0.0
-fix wy1 all wall/gran model hertz tangential history primitive type 1 yplane {lx}
-lattice         sc {D} origin 0.5 0.5 0.5
-region          bed block 0 {lx} 0 {lx} 0 {h * D} units box
-create_atoms    1 region bed
-set             group all diameter {D} density 2500
-fix integr all nve/sphere
-""")
+    gc.template.render(os.path.join(HERE, "template"), out, dict(
+        W=w, H=h, HB=hb, LX=lx, LZ=lz, NX=nx, NZ=nz, NP=np_, D=D, SKIN=0.2 * D, BED_TOP=h * D, DT_DEM=DT_DEM,
+        END_TIME=end_time, DT_CFD=COUPLING_INTERVAL * DT_DEM, COUPLING_INTERVAL=COUPLING_INTERVAL, U_IN=U_IN,
+        AIR="off" if air == "off" else "on",
+        FORCES="forces { drag off; pressureGradient off; buoyancy off; }\n" if air == "forces-off" else "",
+        OUTPUT=f"output {{ vtkInterval {vtk_interval:.10g}; }}\n" if vtk_interval else ""))
     meta = {"particles": n_actual, "width_d": w, "bed_height_d": h, "box_height_d": hb,
             "cells": nx * nx * nz, "air": air, "coupling_steps": steps, "np": np_}
-    write(os.path.join(out, "bench.json"), json.dumps(meta, indent=1) + "\n")
+    gc.template.write(os.path.join(out, "bench.json"), json.dumps(meta, indent=1) + "\n")
     return meta
 
 

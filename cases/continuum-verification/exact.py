@@ -4,7 +4,7 @@ continuum solver (granairContinuumFoam) must reproduce.
 Every function evaluates the rheology exactly as coupling/rheology/MuI.hpp
 documents it (Jop form or the Barker & Gray 2017 partial regularisation,
 clamped to [etaMin, etaMax]), written out again here so the check does not
-share code with what it checks. python3 standard library only.
+share code with what it checks (only the root finder, gc.numerics.bisect).
 
 References:
     GDR MiDi (2004). On dense granular flows. Eur. Phys. J. E 14, 341-365.
@@ -14,6 +14,8 @@ References:
     Barker, T., Gray, J.M.N.T. (2017). J. Fluid Mech. 828, 5-32.
 """
 import math
+
+from granair_cases.numerics import bisect
 
 G = 9.81
 
@@ -30,14 +32,7 @@ def barker_gray_i1(q):
         nu = I * (q["mu2"] - q["muS"]) * q["I0"] / (q["I0"] + I) ** 2 / mu
         return 4 * nu * nu - 4 * nu + mu * mu * (1 - nu / 2) ** 2
     tz = math.tan((math.atan(q["muS"]) + math.atan(q["mu2"])) / 2)
-    lo, hi = 1e-14, (tz - q["muS"]) * q["I0"] / (q["mu2"] - tz)
-    for _ in range(300):
-        mid = 0.5 * (lo + hi)
-        if c(mid) < 0:
-            hi = mid
-        else:
-            lo = mid
-    return hi
+    return bisect(c, 1e-14, (tz - q["muS"]) * q["I0"] / (q["mu2"] - tz), n=300, increasing=False)
 
 
 def friction(I, q):
@@ -65,20 +60,9 @@ def viscosity(p, gd, q):
     return min(max(friction(I, q) * p / gd, eta_min(q)), q.get("etaMax", 1e5))
 
 
-def bisect(f, lo, hi, n=300):
-    """Root of an increasing f on [lo, hi] (f(lo) < 0 < f(hi)), geometric bisection for lo > 0."""
-    for _ in range(n):
-        mid = math.sqrt(lo * hi) if lo > 0 else 0.5 * (lo + hi)
-        if f(mid) < 0:
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
-
-
 def inertial_number_at(mu_target, q):
     """I with mu(I) = mu_target (mu is increasing in I)."""
-    return bisect(lambda I: friction(I, q) - mu_target, 1e-14, 1e6)
+    return bisect(lambda I: friction(I, q) - mu_target, 1e-14, 1e6, n=300, geometric=True)
 
 
 # ------------------------------------------------------------ inclined plane
@@ -114,5 +98,5 @@ def couette_coulomb(y, H, V, P, mu_w, q):
     tau0 = viscosity(P, gd0, q) * gd0
     if tau0 <= mu_w * P:
         return V * y / H, "stick", gd0
-    gd = bisect(lambda g: viscosity(P, g, q) * g - mu_w * P, 1e-12, gd0)
+    gd = bisect(lambda g: viscosity(P, g, q) * g - mu_w * P, 1e-12, gd0, n=300, geometric=True)
     return V - gd * (H - y), "slide", gd

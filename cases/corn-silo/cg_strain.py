@@ -24,25 +24,6 @@ import strain
 COMPONENTS = ("xx", "yy", "zz", "xy", "yz", "xz")
 
 
-def merge(paths, out):
-    """The snapshots of several dump files (the chunks: the first step of one is the
-    last of the one before) into one file, each step once, in order."""
-    seen = {}
-    for path in paths:
-        with open(path) as fh:
-            lines = fh.read().splitlines()
-        starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")] + [len(lines)]
-        for a, b in zip(starts[:-1], starts[1:]):
-            step = int(lines[a + 1])
-            n = int(lines[a + 3])
-            if b - a >= 9 + n:                      # a whole snapshot (a stopped chunk may cut one)
-                seen.setdefault(step, lines[a:a + 9 + n])
-    with open(out, "w") as fh:
-        for step in sorted(seen):
-            fh.write("\n".join(seen[step]) + "\n")
-    return out, len(seen)
-
-
 def run(run_dir, v, t0, t1):
     """(I1, J2, eps 3 x 3, grid points used) of the CG strain per CV_EVERY over
     [t0, t1]; None (with a message) when granairCG is not built."""
@@ -51,13 +32,12 @@ def run(run_dir, v, t0, t1):
         print(f"corn-silo: granairCG not found (./granair build): no CG strain for {run_dir}", flush=True)
         return None
     post = os.path.join(run_dir, "post")
-    merged, n = merge(sorted(glob.glob(os.path.join(post, "cv_*.dump"))), os.path.join(post, "cv_all.dump"))
+    merged, n = gc.dem.merge_dumps(sorted(glob.glob(os.path.join(post, "cv_*.dump"))), os.path.join(post, "cv_all.dump"))
     r, h = P.CV_RADIUS, P.CV_HEIGHT
     stem = os.path.join(post, "cg_cv")
-    gc.runner.run([exe, "--particles", merged, "--dt", repr(v["DT"]), "--coordinates", "XYZ", "--kernel", "gauss",
-                   "--width", repr(P.CG_WIDTH), "--spacing", repr(P.CG_SPACING), "--min", repr(-r), repr(-r), "0",
-                   "--max", repr(r), repr(r), repr(h), "--from", repr(t0), "--to", repr(t1), "--out", stem,
-                   "--format", "csv"], run_dir, "granairCG")
+    gc.cg.run(run_dir, stem, {"particles": merged, "dt": v["DT"], "coordinates": "XYZ", "kernel": "gauss",
+                              "width": P.CG_WIDTH, "spacing": P.CG_SPACING, "min": [-r, -r, "0"], "max": [r, r, h],
+                              "from": t0, "to": t1, "format": "csv"}, log="granairCG")
     f = gc.series.read_csv(stem + ".csv")
     inside = np.hypot(f["x"], f["y"]) < r
     d = np.array([f[f"strain_rate_{c}"] for c in COMPONENTS])

@@ -1,7 +1,6 @@
 """The corn silo's figures (post.study): mass flow with the Beverloo band, wall
 loads (maximum and where) against the angle, wall-load profiles with Janssen's
 band, strain invariants against the angle, the flow pattern as coloured layers."""
-import glob
 import math
 import os
 
@@ -163,7 +162,7 @@ def force_chains(plt, out, angles, by_angle, run_root):
     found = []
     for a in angles:
         post = os.path.join(run_root, f"a{a}-s1", "post")
-        pairs = sorted(glob.glob(os.path.join(post, "pairs_*.dump")), key=lambda p: int(p.rsplit("_", 1)[1][:-5]))
+        pairs = [p for _, p in gc.dem.numbered(os.path.join(post, "pairs_*.dump"))]
         if pairs:
             found.append((a, [pairs[0]] + ([pairs[-1]] if len(pairs) > 1 else [])))
     if not found:

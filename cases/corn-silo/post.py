@@ -118,14 +118,14 @@ def run(name, run_dir, v, state, out):
     # wall loads: the static fill, and every dump of the discharge
     mesh = gc.dem.read_mesh_vtk(os.path.join(pdir, "walls_fill.vtk"))
     rings = walls.Rings(mesh, angle)
-    sn, ss = walls.loads(os.path.join(pdir, "walls_fill.vtk"))
-    files = [(s, p) for s, p in walls.series(pdir) if s > 0]
+    sn, ss, _ = gc.dem.wall_loads(os.path.join(pdir, "walls_fill.vtk"))
+    files = [(s, p) for s, p in gc.dem.numbered(os.path.join(pdir, "walls_*.vtk")) if s > 0]
     steady = [(s, p) for s, p in files if s * dt >= min(P.STEADY_FROM, 0.4 * t[-1]) - 1e-9]
     el_n = np.zeros_like(sn)
     el_s = np.zeros_like(ss)
     ring_n, ring_s = [], []
     for s, p in files:
-        n_, s_ = walls.loads(p)
+        n_, s_, _ = gc.dem.wall_loads(p)
         ring_n.append(rings.mean(n_))
         ring_s.append(rings.mean(s_))
         if (s, p) in steady:
@@ -224,13 +224,6 @@ def run(name, run_dir, v, state, out):
     return res
 
 
-def mean_sd(values):
-    x = np.array([v for v in values if v is not None and math.isfinite(v)], dtype=float)
-    if not len(x):
-        return math.nan, math.nan
-    return float(x.mean()), float(x.std(ddof=1)) if len(x) > 1 else math.nan
-
-
 def angle(out, a, runs, seeds, size, run_root):
     """Mean +- SD of one angle's runs (sample SD, n - 1): OUT/a<angle>/mean.json,
     mass_flow.csv (mean of the runs), level.json, walls.csv (mean profiles) and
@@ -238,7 +231,7 @@ def angle(out, a, runs, seeds, size, run_root):
     adir = os.path.join(out, f"a{a}")
     res = dict(angle_deg=a, runs=len(runs), runs_planned=seeds, grains=size["grains"])
     for key in SCALARS:
-        res[key], res[key + "_sd"] = mean_sd([r.get(key) for r in runs])
+        res[key], res[key + "_sd"] = gc.series.mean_sd([r.get(key) for r in runs])
     # mass flow: every grain moves once any is withdrawn (Jenike); funnel flow leaves grains at rest
     res["pattern"] = "mass flow" if res["stagnant_mass_fraction"] < P.STAGNANT_MASS_FLOW else "funnel flow"
     flows = [gc.series.read_csv(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_mass_flow.csv")) for r in runs]
@@ -254,7 +247,7 @@ def angle(out, a, runs, seeds, size, run_root):
         rr = dict(wall=row["wall"], z_m=float(row["z_m"]), along_wall_m=float(row["along_wall_m"]),
                   depth_m=float(np.mean([float(p[i]["depth_m"]) for p in profs])))
         for c in cols:
-            rr[c], rr[c[:-3] + "_sd_Pa"] = mean_sd([float(p[i][c]) for p in profs])
+            rr[c], rr[c[:-3] + "_sd_Pa"] = gc.series.mean_sd([float(p[i][c]) for p in profs])
         rows.append(rr)
     gc.series.write_rows(os.path.join(adir, "walls.csv"), rows, fmt="{:.6g}")
     res["wall_time_s"] = float(np.mean([r["wall_s"] for r in runs]))

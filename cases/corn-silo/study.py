@@ -107,24 +107,19 @@ def next_prime(n):
     return n
 
 
-def liggghts(inp, tag):
-    """LIGGGHTS on one input; its screen output goes to the step's log (log/<tag>.log)."""
-    return ["liggghts", "-in", inp, "-log", f"log/log.{tag}"]
-
-
 def read_state(run):
-    path = os.path.join(run, "post", "state.json")
-    if not os.path.exists(path):
-        return None
+    """The run's progress: the fill (post/fill.json) and the discharge chunks (log/discharge.json,
+    gc.chunks); None before the fill is done."""
+    path, old = os.path.join(run, "post", "fill.json"), os.path.join(run, "post", "state.json")
+    if not os.path.exists(path):        # a run of the study before gc.chunks kept its state whole
+        return json.load(open(old)) if os.path.exists(old) else None
     with open(path) as fh:
-        return json.load(fh)
-
-
-def write_state(run, state):
-    path = os.path.join(run, "post", "state.json")
-    with open(path + ".tmp", "w") as fh:
-        json.dump(state, fh, indent=1)
-    os.replace(path + ".tmp", path)                  # a state is whole or absent
+        fill = json.load(fh)
+    chunks = gc.chunks.record(run, "discharge")["chunks"]
+    last = chunks[-1] if chunks else dict(step=0, ndis=0)
+    return dict(fill, step=last["step"], ndis=last["ndis"], chunk=len(chunks),
+                cpu_discharge_s=sum(c["cpu_s"] for c in chunks), wall_s=fill["wall_s"] + sum(c["wall_s"] for c in chunks),
+                orphans=sum(c["orphans"] for c in chunks), orphans_kg=sum(c["orphans_kg"] for c in chunks))
 
 
 def setup(run, v, fresh):
@@ -132,77 +127,55 @@ def setup(run, v, fresh):
     is kept, and must have been set up with the same numbers."""
     saved = os.path.join(run, "numbers.json")
     if os.path.exists(saved) and read_state(run) is not None and not fresh:
-        with open(saved) as fh:
-            old = json.load(fh)
-        diff = [k for k in v if old.get(k) != v[k]]
-        if diff:
-            raise gc.CaseError(f"{run} was set up with other numbers ({', '.join(f'{k}: {old.get(k)} vs {v[k]}' for k in diff[:4])}); "
-                               f"run with --fresh to start it again, or give another --out")
-        return
+        return gc.template.check_values(saved, v, "run with --fresh to start it again, or give another --out")
     gc.runner.clean(run)
     gc.template.render(os.path.join(HERE, "template"), run, v)
     geometry.write(os.path.join(run, "dem"), v["ANGLE"], v["HALF"], v["Z_HI"] - 0.001)
     os.makedirs(os.path.join(run, "post"))
-    with open(saved, "w") as fh:
-        json.dump(v, fh, indent=1)
+    gc.template.save_values(saved, v)
 
 
 def simulate(name, run, v):
     """Fill (if not done) and the discharge chunks still to run; returns the state."""
-    state = read_state(run)
-    if state is None:
+    if read_state(run) is None:
         t0 = time.time()
         for f in os.listdir(os.path.join(run, "post")):
             os.remove(os.path.join(run, "post", f))
-        cpu = gc.runner.run(liggghts("dem/in.fill", "fill"), run, "fill")
+        shutil.rmtree(os.path.join(run, "restart"), ignore_errors=True)     # and the chunks of an earlier fill
+        gc.runner.clean(os.path.join(run, "log"))
+        cpu = gc.runner.liggghts(run, "dem/in.fill", "fill", "log/log.fill", screen=False)   # the screen in log/fill.log
         with open(os.path.join(run, "log", "log.fill")) as fh:
             settled = [ln.strip() for ln in fh if ln.startswith("granair fill: settled")]
         if not settled:
             raise gc.CaseError(f"{run}/log/log.fill: the fill did not report settling")
         print(f"corn-silo {name}: {settled[-1]} ({cpu:.0f} s CPU)", flush=True)
-        state = dict(step=0, ndis=0, chunk=0, cpu_fill_s=cpu, cpu_discharge_s=0.0, wall_s=time.time() - t0)
-        write_state(run, state)
-    total, chunk = v["DISCHARGE_STEPS"], v["DISCHARGE_CHUNK_STEPS"]
-    while state["step"] < total:
-        t0 = time.time()
-        upto = min(total, (state["step"] // chunk + 1) * chunk)
-        k = state["chunk"] + 1
-        post = os.path.join(run, "post")
-        restart = "post/fill.restart" if state["step"] == 0 else f"post/discharge-{state['step']}.restart"
-        for f in os.listdir(post):                 # what a stopped chunk left beyond the restart
-            step = post_step(f)
-            if step is not None and step > state["step"]:
-                os.remove(os.path.join(post, f))
-        cmd = liggghts("dem/in.liggghts", f"discharge-{k:03d}") + [
-            "-var", "restart", restart, "-var", "upto", str(upto), "-var", "chunk", f"{k:03d}",
-            "-var", "ndis0", str(state["ndis"]), "-var", "nrem0", str(state.get("orphans", 0)),
-            "-var", "mrem0", repr(state.get("orphans_kg", 0.0))]
-        cpu = gc.runner.run(cmd, run, f"discharge-{k:03d}")
-        os.replace(os.path.join(post, "discharge.restart"), os.path.join(post, f"discharge-{upto}.restart"))
-        flow = post_flow_last(os.path.join(post, f"flow_{k:03d}.txt"))
-        with open(os.path.join(post, f"orphans_{k:03d}.txt")) as fh:
-            n_orphans, m_orphans = fh.read().split()[:2]
-        old = restart if state["step"] else None
-        state.update(step=upto, ndis=int(flow["discharged"]), chunk=k, cpu_discharge_s=state["cpu_discharge_s"] + cpu,
-                     orphans=state.get("orphans", 0) + int(float(n_orphans)),
-                     orphans_kg=state.get("orphans_kg", 0.0) + float(m_orphans), wall_s=state["wall_s"] + time.time() - t0)
-        write_state(run, state)
-        if old:
-            os.remove(os.path.join(run, old))
-        print(f"corn-silo {name}: t = {upto * v['DT']:.2f} of {v['DISCHARGE_S']:.2f} s, {int(flow['discharged'])} grains "
-              f"discharged, {state['cpu_fill_s'] + state['cpu_discharge_s']:.0f} s CPU so far", flush=True)
-    return state
+        gc.template.write(os.path.join(run, "post", "fill.json"), json.dumps(dict(cpu_fill_s=cpu, wall_s=time.time() - t0)))
+    total, chunk, upto = v["DISCHARGE_STEPS"], v["DISCHARGE_CHUNK_STEPS"], {}
 
+    def segment(k, rec):
+        """Chunk k's variables: to the next multiple of the chunk, the counts of the chunks before."""
+        s = read_state(run)
+        if s["step"] >= total:
+            return None
+        if not os.path.exists(os.path.join(run, "post", "fill.json")):
+            raise gc.CaseError(f"{run}: an unfinished run of an older study.py (post/state.json); run with --fresh")
+        for f in ("walls_*.vtk", "full_*.dump", "pairs_*.dump"):     # what a stopped chunk left beyond the restart
+            for step, path in gc.dem.numbered(os.path.join(run, "post", f)):
+                if step > s["step"]:
+                    os.remove(path)
+        upto[k] = min(total, (s["step"] // chunk + 1) * chunk)
+        return dict(upto=upto[k], chunk=f"{k:03d}", ndis0=s["ndis"],
+                    nrem0=s["orphans"], mrem0=repr(s["orphans_kg"]))
 
-def post_step(filename):
-    """The step in the name of an output file written every so many steps (walls_N.vtk, full_N.dump)."""
-    for prefix, suffix in (("walls_", ".vtk"), ("full_", ".dump"), ("pairs_", ".dump")):
-        if filename.startswith(prefix) and filename.endswith(suffix):
-            try:
-                return int(filename[len(prefix):-len(suffix)])
-            except ValueError:
-                return None
-    return None
+    def collect(case, k):
+        flow = post_flow_last(os.path.join(case, "post", f"flow_{k:03d}.txt"))
+        with open(os.path.join(case, "post", f"orphans_{k:03d}.txt")) as fh:
+            n, m = fh.read().split()[:2]
+        print(f"corn-silo {name}: t = {upto[k] * v['DT']:.2f} of {v['DISCHARGE_S']:.2f} s, "
+              f"{int(flow['discharged'])} grains discharged", flush=True)
+        return dict(step=upto[k], ndis=int(flow["discharged"]), orphans=int(float(n)), orphans_kg=float(m))
+    gc.chunks.liggghts(run, "dem/in.liggghts", segment, "post/fill.restart", "discharge", f"corn-silo {name}", collect)
+    return read_state(run)
 
 
 def post_flow_last(path):

@@ -6,13 +6,8 @@ Elements are grouped into rings (one row of the mesh all round the silo: the
 hopper's rows along its wall, the shaft's of RING_HEIGHT) and averaged over
 each ring by area: a ring is the smallest patch that carries enough contacts
 (~100) for a load that is not one grain's. Profiles are rings against height."""
-import glob
-import os
-import re
-
 import numpy as np
 
-import granair_cases as gc
 import geometry
 import parameters as P
 
@@ -25,7 +20,7 @@ class Rings:
         tri = np.array(mesh["cells"])
         p = pts[tri]
         self.points, self.triangles = pts, tri
-        self.area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+        self.area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)  # as gc.dem.wall_loads
         c = p.mean(axis=1)
         r, z = np.hypot(c[:, 0], c[:, 1]), c[:, 2]
         h = P.hopper_height(angle_deg)
@@ -47,25 +42,6 @@ class Rings:
     def mean(self, values):
         """Area-weighted mean of per-element values over each ring."""
         return np.bincount(self.ring, weights=values * self.area, minlength=self.n) / self.weights
-
-
-def loads(path):
-    """(normal, shear) per element [Pa] of one dump mesh/vtk file."""
-    f = gc.dem.read_mesh_vtk(path)["fields"]
-    try:
-        return np.abs(f["normal_stress_average"]), np.abs(f["shear_stress_average"])
-    except KeyError as e:
-        raise gc.CaseError(f"{path}: no field {e} (was the dump written with the `stress` keyword?)")
-
-
-def series(post):
-    """[(step, path)] of the discharge's wall-load files, sorted."""
-    out = []
-    for path in glob.glob(os.path.join(post, "walls_*.vtk")):
-        m = re.search(r"walls_(\d+)\.vtk$", path)
-        if m:
-            out.append((int(m.group(1)), path))
-    return sorted(out)
 
 
 def maximum(rings, profile, hopper):

@@ -76,7 +76,7 @@ def run(out, np, quick, vf, bed, setup_only=False):
         shutil.copyfile(bed, os.path.join(run_dir, "dem", "bed.restart"))
     else:
         print("fluidised-bed: filling and settling the bed (LIGGGHTS, 1 rank)", flush=True)
-        gc.runner.run(["liggghts", "-in", "dem/in.fill", "-log", "log/fill.liggghts"], run_dir)
+        gc.runner.liggghts(run_dir, "dem/in.fill", "liggghts", "log/fill.liggghts", screen=False)
     gc.runner.mesh(run_dir, np)
     print(f"fluidised-bed: coupled run on {np} rank(s), log: {run_dir}/log/granairFoam.log", flush=True)
     gc.runner.run(["granairFoam"], run_dir, np=np)

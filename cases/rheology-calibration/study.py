@@ -28,7 +28,6 @@ against the top wall's traction (force / area), sigma_xz uniform across the
 bulk, mu at the lowest I in the quasi-static band of frictional spheres
 (parameters.py, with sources).
 """
-import glob
 import json
 import math
 import os
@@ -158,23 +157,21 @@ def sweep(name, a, runs):
 
 def liggghts(run, script):
     # the run's own folder: the templates name dem/..., post/... relative to it
-    return gc.runner.run(["liggghts", "-in", f"dem/{script}", "-log", "log/log.liggghts", "-screen",
-                          "log/screen.liggghts"], run, "liggghts")
+    return gc.runner.liggghts(run, f"dem/{script}", "liggghts", "log/log.liggghts", "log/screen.liggghts")
 
 
 # --- post-processing --------------------------------------------------------------
 
 def cg_profiles(run, rv, t_from):
-    """granairCG across the gap: the time average from t_from and each snapshot."""
-    out = os.path.join(run, "post", "profile")
-    d = rv["D"]
-    cmd = ["granairCG", "--particles", "post/cg/particles_*.dump", "--pairs", "post/cg/pairs_*.dump",
-           "--dt", repr(rv["DEM_DT"]), "--coordinates", "Z", "--kernel", "gauss", "--width", repr(P.CG_WIDTH * d),
-           "--spacing", repr(P.CG_SPACING * d), "--from", repr(t_from), "--every", "--format", "csv", "--out", out]
-    if not os.path.exists(out + ".csv") or os.path.getmtime(out + ".csv") < os.path.getmtime(
-            os.path.join(run, "dem", "shear.restart")):
-        gc.runner.run(cmd, run, "granairCG")
-    return out
+    """granairCG across the gap: the time average from t_from and each snapshot (post/profile*.csv)."""
+    stem = os.path.join("post", "profile")
+    out = os.path.join(run, stem + ".csv")
+    if not os.path.exists(out) or os.path.getmtime(out) < os.path.getmtime(os.path.join(run, "dem", "shear.restart")):
+        gc.cg.run(run, stem, {"particles": "post/cg/particles_*.dump", "pairs": "post/cg/pairs_*.dump",
+                              "dt": rv["DEM_DT"], "coordinates": "Z", "kernel": "gauss", "width": P.CG_WIDTH * rv["D"],
+                              "spacing": P.CG_SPACING * rv["D"], "from": t_from, "every": True, "format": "csv"},
+                  log="granairCG")
+    return os.path.join(run, stem)
 
 
 def bulk(table, lo, hi, rho_p_fallback):
@@ -200,13 +197,6 @@ def bulk(table, lo, hi, rho_p_fallback):
                                                             / abs(sxz)))
 
 
-def read_columns(path):
-    with open(path) as fh:
-        head = fh.readline().strip().lstrip("#").split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {h.strip(): data[:, k] for k, h in enumerate(head)}
-
-
 def post_run(run, rv):
     """The run's bulk values, their block standard errors and the wall check."""
     steps = rv["N_STEPS"]
@@ -220,19 +210,12 @@ def post_run(run, rv):
     wt = P.WALL_THICKNESS * d
     z_bot, z_top = float(np.mean(w[:, 4])), float(np.mean(w[:, 3]))
     lo, hi = z_bot + 0.5 * wt + P.BAND * d, z_top - 0.5 * wt - P.BAND * d
-    mean = read_columns(stem + ".csv")
+    mean = gc.cg.read(stem + ".csv")
     res = bulk(mean, lo, hi, rv["RHO"])
-    snaps = sorted(glob.glob(stem + "_*.csv"), key=lambda p: int(p.rsplit("_", 1)[1][:-4]))
-    snaps = [s for s in snaps if int(s.rsplit("_", 1)[1][:-4]) * rv["DEM_DT"] >= t_from - 1e-12]
-    tables = [read_columns(s) for s in snaps]
-    blocks = [b for b in np.array_split(np.arange(len(tables)), BLOCKS) if len(b)]
-    vals = []
-    for b in blocks:
-        avg = {k: np.mean([tables[j][k] for j in b], axis=0) for k in tables[0]}
-        vals.append(bulk(avg, lo, hi, rv["RHO"]))
-    for k in ("I", "mu", "mu_J2", "mu_xz", "phi", "P", "sigma_xz", "sigma_zz"):
-        x = np.array([b[k] for b in vals])
-        res[f"{k}_se"] = float(np.std(x, ddof=1) / math.sqrt(len(x))) if len(x) > 1 else math.nan
+    tables = [gc.cg.read(p) for step, p in gc.dem.numbered(stem + "_*.csv") if step * rv["DEM_DT"] >= t_from - 1e-12]
+    se = gc.series.block_errors(tables, lambda t: bulk(t, lo, hi, rv["RHO"]),
+                                ("I", "mu", "mu_J2", "mu_xz", "phi", "P", "sigma_xz", "sigma_zz"), BLOCKS)
+    res.update({f"{k}_se": v for k, v in se.items()})
     area = rv["LX"] * rv["LY"]
     res.update(wall_tau=float(-np.mean(w[:, 0]) / area), wall_sigma=float(np.mean(w[:, 2]) / area),
                wall_mu=float(-np.mean(w[:, 0]) / np.mean(w[:, 2])), gap=z_top - z_bot - wt, band=(lo, hi),
@@ -240,85 +223,13 @@ def post_run(run, rv):
     return res, mean
 
 
-def fit_mu(i, mu, se):
-    """Weighted least squares of mu = mu_s + dmu I / (I0 + I): linear in (mu_s, dmu)
-    for a given I0, profiled over log I0 then refined; covariance from the
-    Jacobian at the optimum, scaled by the reduced chi^2 when it exceeds 1."""
-    w = 1.0 / np.maximum(se, 1e-4) ** 2
-
-    def solve(i0):
-        a = np.column_stack([np.ones_like(i), i / (i0 + i)])
-        aw = a * np.sqrt(w)[:, None]
-        c, *_ = np.linalg.lstsq(aw, mu * np.sqrt(w), rcond=None)
-        return c, float(np.sum(w * (mu - a @ c) ** 2))
-    grid = np.logspace(-4, 1, 501)
-    chi = [solve(g)[1] for g in grid]
-    k = int(np.argmin(chi))
-    lo, hi = grid[max(0, k - 1)], grid[min(len(grid) - 1, k + 1)]
-    for _ in range(80):                       # golden section in log I0
-        m1, m2 = lo * (hi / lo) ** 0.382, lo * (hi / lo) ** 0.618
-        if solve(m1)[1] < solve(m2)[1]:
-            hi = m2
-        else:
-            lo = m1
-    i0 = math.sqrt(lo * hi)
-    (mu_s, dmu), chi2 = solve(i0)
-    jac = np.column_stack([np.ones_like(i), i / (i0 + i), -dmu * i / (i0 + i) ** 2])   # d/d(mu_s, dmu, I0)
-    dof = max(1, len(i) - 3)
-    cov = np.linalg.pinv(jac.T @ (jac * w[:, None])) * max(1.0, chi2 / dof)
-    # mu_2 = mu_s + dmu: its variance from the covariance
-    t = np.array([[1, 0, 0], [1, 1, 0], [0, 0, 1]])
-    cov2 = t @ cov @ t.T
-    return dict(mu_s=mu_s, mu_2=mu_s + dmu, I0=i0, mu_s_se=math.sqrt(cov2[0, 0]), mu_2_se=math.sqrt(cov2[1, 1]),
-                I0_se=math.sqrt(cov2[2, 2]), chi2_reduced=chi2 / dof, covariance=cov2.tolist())
-
-
-def fit_phi(i, phi, se):
-    sel = np.ones(len(i), bool)
-    w = 1.0 / np.maximum(se[sel], 1e-4) ** 2
-    a = np.column_stack([np.ones(sel.sum()), -i[sel]])
-    aw = a * np.sqrt(w)[:, None]
-    c, *_ = np.linalg.lstsq(aw, phi[sel] * np.sqrt(w), rcond=None)
-    chi2 = float(np.sum(w * (phi[sel] - a @ c) ** 2))
-    dof = max(1, sel.sum() - 2)
-    cov = np.linalg.pinv(aw.T @ aw) * max(1.0, chi2 / dof)
-    t = np.array([[1, 0], [1, -1]])                 # phi_min = phi_max - span
-    cov2 = t @ cov @ t.T
-    return dict(phi_max=c[0], phi_min=c[0] - c[1], phi_max_se=math.sqrt(cov2[0, 0]), phi_min_se=math.sqrt(cov2[1, 1]),
-                chi2_reduced=chi2 / dof)
-
-
-def mu_model(i, f):
-    return f["mu_s"] + (f["mu_2"] - f["mu_s"]) / (f["I0"] / i + 1)
-
-
-BLOCK = """// mu(I) of the {title}, calibrated from a DEM shear cell
-// (cases/rheology-calibration, {when}): {n} runs, I = {imin:.2g}..{imax:.2g} at P = {p:g} Pa.
-// Fit standard errors: mu_s +- {mu_s_se:.2g}, mu_2 +- {mu_2_se:.2g}, I0 +- {I0_se:.2g},
-// phiMax +- {phi_max_se:.2g}, phiMin +- {phi_min_se:.2g}. d is the DEM parcel's mean diameter (I was measured with it).
-muS         {mu_s:.4f};
-mu2         {mu_2:.4f};
-I0          {I0:.4g};
-d           {d:.6g};         // [m]
-rhoP        {rho:g};          // particle density [kg/m3]
-phiMax      {phi_max:.4f};
-phiMin      {phi_min:.4f};
-"""
-
-
 def write_outputs(name, out, rows, fm, fp, v):
+    """The fit as the entries of a muI block (muI) and a complete block (rheology): template/muI, template/rheology."""
     d = dict(fm, **fp)
-    m = P.MATERIALS[name]
-    txt = BLOCK.format(title=m["title"], when=time.strftime("%Y-%m-%d"), n=len(rows), imin=min(r["I"] for r in rows),
-                       imax=max(r["I"] for r in rows), p=v["PRESSURE"], d=v["D"], rho=m["rho"], **d)
-    with open(os.path.join(out, "muI"), "w") as fh:
-        fh.write(txt)
-    comments = [ln for ln in txt.splitlines() if ln.startswith("//")]
-    entries = [ln for ln in txt.splitlines() if ln and not ln.startswith("//")]
-    entries.append("// etaMax, pMin, gammaDotMin, regularisation: the solver's numerics (its defaults unless set here)")
-    with open(os.path.join(out, "rheology"), "w") as fh:
-        fh.write("\n".join(comments) + "\nrheology\n{\n    type        muI;\n")
-        fh.write("".join("    " + ln + "\n" for ln in entries) + "}\n")
+    gc.template.render(os.path.join(HERE, "template"), out, dict(
+        {k.upper(): x for k, x in d.items()}, TITLE=P.MATERIALS[name]["title"], WHEN=time.strftime("%Y-%m-%d"),
+        N=len(rows), I_MIN=min(r["I"] for r in rows), I_MAX=max(r["I"] for r in rows), PRESSURE=v["PRESSURE"],
+        D=v["D"], RHO=P.MATERIALS[name]["rho"]), only=["muI", "rheology"])
     return d
 
 
@@ -357,41 +268,40 @@ def post(a, runs, out):
                              fmt="{:.6g}")
         plot_profiles(name, profiles, os.path.join(res_dir, "profiles.png"))
         fit_rows = [r for r in rows if r["in_fit"]]
-        i = np.array([r["I"] for r in fit_rows])
+        col = lambda k: np.array([r[k] for r in fit_rows])          # noqa: E731
         fits, alt = {}, {}
         if len(fit_rows) >= 4:
-            fm = fit_mu(i, np.array([r["mu"] for r in fit_rows]), np.array([r["mu_se"] for r in fit_rows]))
-            fp = fit_phi(i, np.array([r["phi"] for r in fit_rows]), np.array([r["phi_se"] for r in fit_rows]))
+            fm, fp = (gc.calibration.fit_mu(col("I"), col("mu"), col("mu_se")),
+                      gc.calibration.fit_phi(col("I"), col("phi"), col("phi_se")))
             fits = write_outputs(name, res_dir, fit_rows, fm, fp, cell(name, a))
-            alt = {k: fit_mu(i, np.array([r[k] for r in fit_rows]), np.array([r[f"{k}_se"] for r in fit_rows]))
-                   for k in ("mu_xz", "mu_J2")}
+            alt = {k: gc.calibration.fit_mu(col("I"), col(k), col(f"{k}_se")) for k in ("mu_xz", "mu_J2")}
             for f in alt.values():
                 f.pop("covariance")
             print(f"{name}: mu_s = {fm['mu_s']:.4f} +- {fm['mu_s_se']:.4f}, mu_2 = {fm['mu_2']:.4f} +- "
                   f"{fm['mu_2_se']:.4f}, I0 = {fm['I0']:.4g} +- {fm['I0_se']:.2g}; phi_max = {fp['phi_max']:.4f} +- "
                   f"{fp['phi_max_se']:.4f}, phi_min = {fp['phi_min']:.4f} +- {fp['phi_min_se']:.4f}", flush=True)
         m = P.MATERIALS[name]
-        summary[name] = dict(material=m["title"], source=m["source"], d_parcel_m=m["d_mean"], rho_p=m["rho"],
-                             youngs_Pa=m["youngs"], poisson=m["nu"], restitution=m["restitution"],
-                             friction=m["friction"], rolling_friction=m["rolling_friction"],
-                             cohesion_energy_density_J_m3=m["cohesion"], pressure_Pa=a.pressure,
-                             cell=dict(lx_d=a.cell_x, ly_d=a.cell_x, gap_d=a.gap, **cellinfo),
-                             fit={k: v for k, v in fits.items() if k != "covariance"},
-                             mu_fit_covariance=fits.get("covariance"),
-                             fit_other_definitions=dict(alt, note="mu_xz = sigma_xz / sigma_zz (plane-shear convention), "
-                                                        "mu_J2 = sqrt(J2) / P (with the normal-stress differences); "
-                                                        "the fit above is mu = |sigma_xz| / P, P = tr(sigma)/3"),
-                             points=[{k: r[k] for k in keys} for r in rows],
-                             cpu_s=round(cpu_total, 1))
-        summary[name]["continuum_now"] = {k: v for k, v in continuum_now()[name].items()}
+        summary[name] = dict(
+            {key: m[k] for key, k in (("material", "title"), ("source", "source"), ("d_parcel_m", "d_mean"),
+                                      ("rho_p", "rho"), ("youngs_Pa", "youngs"), ("poisson", "nu"),
+                                      ("restitution", "restitution"), ("friction", "friction"),
+                                      ("rolling_friction", "rolling_friction"),
+                                      ("cohesion_energy_density_J_m3", "cohesion"))},
+            pressure_Pa=a.pressure, cell=dict(lx_d=a.cell_x, ly_d=a.cell_x, gap_d=a.gap, **cellinfo),
+            fit={k: v for k, v in fits.items() if k != "covariance"}, mu_fit_covariance=fits.get("covariance"),
+            fit_other_definitions=dict(alt, note="mu_xz = sigma_xz / sigma_zz (plane-shear convention), mu_J2 = "
+                                       "sqrt(J2) / P (with the normal-stress differences); the fit above is "
+                                       "mu = |sigma_xz| / P, P = tr(sigma)/3"),
+            points=[{k: r[k] for k in keys} for r in rows], cpu_s=round(cpu_total, 1),
+            continuum_now=continuum_now()[name])
         allrows[name] = (rows, fits)
         ref = os.path.join(HERE, "results", "calibration.json")
         if (a.pressure != P.PRESSURE or a.cell != [P.CELL_X, P.GAP]) and os.path.exists(ref):
             with open(ref) as fh:
                 f0 = json.load(fh).get(name, {}).get("fit")
             if f0:
-                dev = [dict(I=r["I"], mu=r["mu"], mu_se=r["mu_se"], mu_reference_fit=mu_model(r["I"], f0),
-                            difference=r["mu"] - mu_model(r["I"], f0)) for r in rows]
+                dev = [dict(I=r["I"], mu=r["mu"], mu_se=r["mu_se"], mu_reference_fit=gc.calibration.mu_jop(r["I"], f0),
+                            difference=r["mu"] - gc.calibration.mu_jop(r["I"], f0)) for r in rows]
                 gc.series.write_rows(os.path.join(res_dir, f"vs_P{P.PRESSURE:g}_fit.csv"), dev, fmt="{:.6g}")
                 for x in dev:
                     print(f"{name}, P = {a.pressure:g} Pa, cell {a.cell_x:g} x {a.gap:g} d: I = {x['I']:.3g}: mu {x['mu']:.4f} +- {x['mu_se']:.4f}, "
@@ -480,7 +390,7 @@ def plot_fits(allrows, out, pressure):
                                 label=f"{name} DEM (+- 2 s.e.)" if inside else f"{name} DEM, not fitted (unsteady "
                                 f"or I > {P.FIT_I_MAX:g})")
             if fits and key == "mu":
-                ax.plot(ii, mu_model(ii, fits), color=col, label=f"fit: mu_s {fits['mu_s']:.3f}, mu_2 "
+                ax.plot(ii, gc.calibration.mu_jop(ii, fits), color=col, label=f"fit: mu_s {fits['mu_s']:.3f}, mu_2 "
                                                                  f"{fits['mu_2']:.3f}, I0 {fits['I0']:.3g}")
                 ax.plot(i, [r["wall_mu"] for r in rows], "x", color=col, ms=5, label=f"{name}: top wall -F_x/F_z (= sigma_xz/sigma_zz)")
             if fits and key == "phi":
@@ -489,7 +399,7 @@ def plot_fits(allrows, out, pressure):
                         label=f"fit: phi_max {fits['phi_max']:.3f}, phi_min {fits['phi_min']:.3f}")
         for name, f in lit.items():
             if name in allrows:
-                y = mu_model(ii, f) if key == "mu" else f["phi_max"] - (f["phi_max"] - f["phi_min"]) * ii
+                y = gc.calibration.mu_jop(ii, f) if key == "mu" else f["phi_max"] - (f["phi_max"] - f["phi_min"]) * ii
                 ax.plot(ii, y, color=colours[name], ls="--", lw=0.8, label=f["label"])
         ax.set(xscale="log", xlabel="inertial number I", ylabel=ylab, title=f"{ylab}: DEM shear cell, P = "
                f"{pressure:g} Pa")

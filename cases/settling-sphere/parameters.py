@@ -3,6 +3,8 @@ laws' terminal velocities written here from the papers, independently of
 coupling/drag/ (the C++ laws under test). SI units."""
 import math
 
+from granair_cases.numerics import bisect
+
 G = 9.81                       # [m/s2], as in dem/in.liggghts and couplingProperties
 TOLERANCE = 0.02               # plateau velocity vs the law's v_t
 FLATNESS = 0.1 * TOLERANCE     # the plateau may change by at most this over its window
@@ -61,18 +63,10 @@ def terminal_velocity(law, s, eps):
 
     def excess(v):
         return beta(s["d"], eps, v, s["rho_f"], s["mu"]) * v - net_weight(s)
-    lo, hi = 0.0, 1e-3
+    hi = 1e-3
     while excess(hi) < 0:
         hi *= 2
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if excess(mid) < 0:
-            lo = mid
-        else:
-            hi = mid
-        if hi - lo <= 1e-15 * hi:
-            break
-    return 0.5 * (lo + hi)
+    return bisect(excess, 0.0, hi, rtol=1e-15)
 
 
 def relaxation_time(law, s, eps, v_t):

@@ -66,34 +66,9 @@ def compute(d, v, t, stem):
 
 
 def read_grid(csv):
-    """The CSV of an XZ run as 2-D arrays [iz, ix] (gc.cg.read gives them in the file's axis order)."""
-    f = gc.cg.read(csv)
-    if set(f["axes"]) != {"x", "z"}:
-        raise gc.CaseError(f"{csv}: expected an XZ grid, found coordinates {f['axes']}")
-    flip = f["axes"] == ("x", "z")
-    grid = {k: (a.T if flip else a) for k, a in f.items() if isinstance(a, np.ndarray) and a.ndim == 2}
-    return f["x"], f["z"], grid
-
-
-def kernel_share_below(u):
-    """Share of the 2-D Gaussian kernel (cut at CUT widths, normalised over its disc)
-    whose points lie below a line u widths above its centre (numerical, 1e-9)."""
-    t = np.linspace(-CUT, CUT, 20001)
-    from math import erf
-    m = np.exp(-t ** 2 / 2) * np.array([erf(math.sqrt(max(CUT ** 2 - x ** 2, 0.0) / 2)) for x in t])
-    cdf = np.concatenate([[0.0], np.cumsum(0.5 * (m[1:] + m[:-1]) * np.diff(t))])
-    return np.interp(u, t, cdf / cdf[-1], left=0.0, right=1.0)
-
-
-def bilinear(xs, zs, a, x, z):
-    """a (on the grid xs, zs) at the points (x, z), bilinear; NaN outside."""
-    i = np.clip(np.searchsorted(xs, x) - 1, 0, len(xs) - 2)
-    k = np.clip(np.searchsorted(zs, z) - 1, 0, len(zs) - 2)
-    fx, fz = (x - xs[i]) / (xs[i + 1] - xs[i]), (z - zs[k]) / (zs[k + 1] - zs[k])
-    out = (a[k, i] * (1 - fx) * (1 - fz) + a[k, i + 1] * fx * (1 - fz) + a[k + 1, i] * (1 - fx) * fz
-           + a[k + 1, i + 1] * fx * fz)
-    inside = (x >= xs[0]) & (x <= xs[-1]) & (z >= zs[0]) & (z <= zs[-1])
-    return np.where(inside, out, np.nan)
+    """The CSV of an XZ run: the x and z values and the fields as [iz, ix]."""
+    f = gc.cg.read(csv, order=("z", "x"))
+    return f["x"], f["z"], f
 
 
 def wall_distance(v, x, z):
@@ -113,7 +88,7 @@ def analyse(d, v, t, csv):
     cg_volume = float(np.nansum(phi) * area * v["SLICE"])          # per the slice: x-z integral x depth
     p = gc.dem.read_dump(os.path.join(d, "dem", "post", "cg", f"particles_{step_of(v, t)}.dump"))
     vol = p["mass"] / P.RHO_P
-    share = kernel_share_below((hi[2] - p["z"]) / w)
+    share = gc.cg.kernel_share_below((hi[2] - p["z"]) / w, CUT)
     inside = p["z"] < hi[2]
     band = np.abs(p["z"] - hi[2]) < CUT * w
     out = dict(t=t, csv=csv, cg_volume_m3=cg_volume, kernel_weighted_m3=float(np.sum(vol * share)),
@@ -126,7 +101,7 @@ def analyse(d, v, t, csv):
     cx, cz = (gc.foam.read_field(os.path.join(d, "0", f)) for f in ("Cx", "Cz"))
     td = gc.foam.time_dir(d, t)
     eps = gc.foam.read_field(os.path.join(td, "voidfraction"), len(cx))
-    cg_at = bilinear(xs, zs, phi, cx, cz)
+    cg_at = gc.cg.bilinear(zs, xs, phi, cz, cx)
     bulk = ((cz > 2 * v["B"]) & (cz < hi[2] - CUT * w) & (wall_distance(v, cx, cz) > CUT * w)
             & (1 - eps > P.CG_BULK_MIN_SOLID) & np.isfinite(cg_at))
     out.update(bulk_cells=int(bulk.sum()), bulk_cg_solid=float(np.mean(cg_at[bulk])) if bulk.any() else math.nan,
@@ -258,7 +233,6 @@ def picture(d, v, rows, path, name):
     pressure, air pressure, air dp/dz. Profiles on the centre line x = 0 against z: solid
     fraction, pressure (CG, air), vertical velocity (CG, CFD solid, air), air dp/dz; across the
     orifice plane against x: solid fraction, vertical velocity."""
-    from matplotlib.collections import PolyCollection
     plt = gc.plots.pyplot()
     cells = [c * 1e3 for c in gc.foam.plane_cells(d)]
     lo, hi, w = window(v)
@@ -278,7 +252,6 @@ def picture(d, v, rows, path, name):
     maps = ["CG solid fraction", "1 - air void fraction", "CG |velocity| [m/s]", "CG pressure [Pa]",
             "air p - ambient [Pa]", "air dp/dz [Pa/m]"]
     for i, (r, (xs, zs, g), f, sp) in enumerate(zip(rows, grids, fields, speed)):
-        ext = [xs[0] * 1e3, xs[-1] * 1e3, zs[0] * 1e3, zs[-1] * 1e3]
         for j, label in enumerate(maps):
             ax = axes[2 * i][j]
             ax.set(xlim=xlim, ylim=zlim, aspect="equal")
@@ -290,13 +263,11 @@ def picture(d, v, rows, path, name):
                     ax.text(0.5, 0.5, "DEM only: no air", ha="center", va="center", transform=ax.transAxes, fontsize=7)
                     continue
                 lim, cmap = {1: ((0, 0.65), "viridis"), 4: ((-pm, pm), "RdBu_r"), 5: ((-gm, gm), "PuOr_r")}[j]
-                art = PolyCollection(cells, array=f[key], cmap=cmap, edgecolors="face", linewidths=0.2)
-                art.set_clim(*lim)
-                ax.add_collection(art)
+                art = gc.plots.cell_map(ax, cells, f[key], cmap, lim)
             else:
                 a, cmap, lim = {0: (g["volume_fraction"], "viridis", (0, 0.65)), 2: (sp, "magma", (0, vmax)),
                                 3: (g["pressure"], "cividis", (0, pmax))}[j]
-                art = ax.imshow(a, origin="lower", extent=ext, cmap=cmap, vmin=lim[0], vmax=lim[1], interpolation="nearest")
+                art = gc.plots.grid_map(ax, xs, zs, a, cmap, lim)
             fig.colorbar(art, ax=ax, fraction=0.05, pad=0.02).ax.tick_params(labelsize=6)
             if j == 0:
                 ax.set_ylabel("z [mm]", fontsize=7)

@@ -144,8 +144,7 @@ def do_fill(a, b, work):
     if a.setup_only:
         return {}
     t0 = time.time()
-    cpu = gc.runner.run(["liggghts", "-in", "dem/in.fill", "-log", "log/log.liggghts", "-screen", "log/screen.liggghts"],
-                        d, "fill", np=a.fill_np, parallel=False)
+    cpu = gc.runner.liggghts(d, "dem/in.fill", "fill", "log/log.liggghts", "log/screen.liggghts", np=a.fill_np)
     return dict(cpu_s=cpu, wall_s=time.time() - t0)
 
 
@@ -170,17 +169,14 @@ def do_run(a, b, air, work):
     v = numbers(a, b, air)
     resume = a.whole and not a.setup_only and gc.chunks.record(d)["chunks"]
     if resume:
-        with open(os.path.join(d, "case.json")) as fh:
-            if json.load(fh) != json.loads(json.dumps(v)):
-                raise gc.CaseError(f"{d}: case.json differs from this study's numbers; remove the folder to start again")
+        gc.template.check_values(os.path.join(d, "case.json"), v)
     else:
         shutil.rmtree(d, ignore_errors=True)
         gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",
                                                                       "dem/in.materials"])
         hopper_walls(v, d)
         os.makedirs(os.path.join(d, "dem", "post"))
-        with open(os.path.join(d, "case.json"), "w") as fh:
-            json.dump(v, fh, indent=1)
+        gc.template.save_values(os.path.join(d, "case.json"), v)
     if a.setup_only:
         return {}
     if not resume:
@@ -189,8 +185,8 @@ def do_run(a, b, air, work):
     if a.whole:
         every = v["WRITE_INTERVAL"]
         chunk = every * max(1, math.ceil(a.chunk / every - 1e-9))
-        rec = gc.chunks.run(d, chunk, finished, v["T_END"], np=a.np,
-                            progress=lambda m: print(f"wedge-silo: {m}", flush=True))
+        rec = gc.chunks.foam(d, chunk, finished, v["T_END"], np=a.np,
+                             progress=lambda m: print(f"wedge-silo: {m}", flush=True))
         print(f"wedge-silo: {name} finished ({rec['reason']}), {rec['cpu_s']:.0f} s CPU in "
               f"{len(rec['chunks'])} chunk(s)", flush=True)
         cpu = rec["cpu_s"]
@@ -256,15 +252,8 @@ def post_run(d, res, name):
         first = np.argmax(s["discharged_kg"] > 0)        # "while discharging": from the first discharged particle on
         out["outlet_p_mean_discharging_Pa"] = float(np.mean(s["outlet_p_Pa"][first:]))
         # the air volume balance of the silo above the orifice up to the last field time
-        # (monitors: flux along +z; the pore volume sum(eps V) of the cells above z = 0)
-        te = out["balance_time_s"] = out["field_times"][-1]
-        k, dt = t <= te + 1e-9, gc.series.step_lengths(t)
-        z, vol = (gc.foam.read_field(os.path.join(d, "0", f)) for f in ("Cz", "V"))
-        eps = [gc.foam.read_field(os.path.join(gc.foam.time_dir(d, x), "voidfraction"), len(z)) for x in (0, te)]
-        out["air_in_top_m3"] = float(-np.sum((s["top_air_kg_s"] * dt)[k]) / P.AIR_RHO)
-        out["air_out_orifice_m3"] = float(-np.sum((s["outlet_air_kg_s"] * dt)[k]) / P.AIR_RHO)
-        out["pore_growth_m3"] = float(np.sum(((eps[1] - eps[0]) * vol)[z > 0]))
-        out["powder_out_m3"] = float(s["discharged_kg"][k][-1] / v["DEPTH_SCALE"] / P.RHO_P)
+        out["balance_time_s"] = out["field_times"][-1]
+        out.update(gc.powder.air_balance(d, s, out["balance_time_s"], P.AIR_RHO, P.RHO_P, v["DEPTH_SCALE"]))
     out["cg"], out["cg_png"] = cg.run(d, v, res, name, out["field_times"])
     for c in out["cg"]:     # the discharge counter's rate (0.1 s window) next to the CG flux through the orifice
         c["orifice"]["series_mass_flow_kg_s"] = float(np.interp(c["t"], t, s["mass_flow_kg_s"]))

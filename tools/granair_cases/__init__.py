@@ -4,7 +4,7 @@
     foam        OpenFOAM dictionaries and fields: read a field, set an entry, time folders
     template    the one template mechanism: a case's template/ with @KEY@ placeholders
     runner      run a step (log, mpirun, CPU time), a job pool, stop a run on a condition
-    chunks      long granairFoam runs in chunks from restart points, resumable, until finished
+    chunks      long runs of granairFoam or LIGGGHTS in chunks, each from the last restart, resumable
     dem         LIGGGHTS: loose packing, data files, STL walls, dumps, mesh VTK, the discharge balance
     series      time series: CSV in and out, window means, steady rates
     powder      the discharge of a silo or hopper: DEM and continuum runs to the level contract
@@ -16,6 +16,7 @@
     cli         the options every study takes (--out, --check, --np, --setup-only)
     calibration the DEM-calibrated mu(I) of a case material in place of a literature block
     cg          CG fields: granairCG run on a case's dumps, its CSV read back as grids, tensor invariants
+    numerics    a root by bisection, a minimum by golden section
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -27,4 +28,4 @@ class CaseError(Exception):
     file, the key or the command and what was expected."""
 
 
-from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg  # noqa: E402,F401,E501
+from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501

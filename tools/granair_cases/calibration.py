@@ -9,12 +9,22 @@ entries are replaced in the text.
 
     fit(material) -> dict (mu_s, mu_2, I0, phi_max, phi_min, d, rho_p, ses, source)
     block(literature_text, material, d=None, where) -> rheology block text
+
+and the fits that make it (cases/rheology-calibration), to points (I, mu or phi,
+standard error):
+
+    mu_jop(I, f)            mu_s + (mu_2 - mu_s) / (I0 / I + 1) (Jop et al. 2006)
+    fit_mu(I, mu, se)       mu_s, mu_2, I0 with standard errors and covariance
+    fit_phi(I, phi, se)     phi_max, phi_min of phi = phi_max - (phi_max - phi_min) I
 """
 import json
+import math
 import os
 import re
 
-from . import CaseError
+import numpy as np
+
+from . import CaseError, numerics
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "cases", "rheology-calibration")
 RESULTS = os.path.normpath(os.path.join(ROOT, "results", "calibration.json"))
@@ -61,3 +71,48 @@ def block(text, material, d=None, where="rheology block"):
     start = re.search(r"^\s*rheology\b", text, re.M)     # the literature block's own header comment goes
     text = text[start.start():] if start else text
     return f"// mu(I) of {f['material']}: cases/rheology-calibration (DEM shear cell, P = 500 Pa)\n" + text
+
+
+def mu_jop(i, f):
+    """Jop, Forterre & Pouliquen (2006): mu(I) of f (mu_s, mu_2, I0)."""
+    return f["mu_s"] + (f["mu_2"] - f["mu_s"]) / (f["I0"] / i + 1)
+
+
+def _weights(se):
+    return 1.0 / np.maximum(se, 1e-4) ** 2          # a floor: one point with a tiny error does not take the fit
+
+
+def fit_mu(i, mu, se):
+    """Weighted least squares of mu = mu_s + dmu I / (I0 + I): linear in (mu_s, dmu)
+    for a given I0, profiled over log I0 (a grid, then golden section); covariance
+    from the Jacobian at the optimum, scaled by the reduced chi^2 when it exceeds 1."""
+    w = _weights(se)
+
+    def solve(i0):
+        a = np.column_stack([np.ones_like(i), i / (i0 + i)])
+        c, *_ = np.linalg.lstsq(a * np.sqrt(w)[:, None], mu * np.sqrt(w), rcond=None)
+        return c, float(np.sum(w * (mu - a @ c) ** 2))
+    grid = np.logspace(-4, 1, 501)
+    k = int(np.argmin([solve(g)[1] for g in grid]))
+    i0 = numerics.golden(lambda g: solve(g)[1], grid[max(0, k - 1)], grid[min(len(grid) - 1, k + 1)], log=True)
+    (mu_s, dmu), chi2 = solve(i0)
+    jac = np.column_stack([np.ones_like(i), i / (i0 + i), -dmu * i / (i0 + i) ** 2])   # d/d(mu_s, dmu, I0)
+    dof = max(1, len(i) - 3)
+    cov = np.linalg.pinv(jac.T @ (jac * w[:, None])) * max(1.0, chi2 / dof)
+    t = np.array([[1, 0, 0], [1, 1, 0], [0, 0, 1]])            # (mu_s, dmu, I0) -> (mu_s, mu_2, I0)
+    cov = t @ cov @ t.T
+    return dict(mu_s=mu_s, mu_2=mu_s + dmu, I0=i0, mu_s_se=math.sqrt(cov[0, 0]), mu_2_se=math.sqrt(cov[1, 1]),
+                I0_se=math.sqrt(cov[2, 2]), chi2_reduced=chi2 / dof, covariance=cov.tolist())
+
+
+def fit_phi(i, phi, se):
+    """Weighted least squares of phi = phi_max - span I; phi_min = phi_max - span."""
+    w = _weights(se)
+    aw = np.column_stack([np.ones(len(i)), -i]) * np.sqrt(w)[:, None]
+    c, *_ = np.linalg.lstsq(aw, phi * np.sqrt(w), rcond=None)
+    chi2 = float(np.sum(w * (phi - (c[0] - c[1] * i)) ** 2))
+    dof = max(1, len(i) - 2)
+    t = np.array([[1, 0], [1, -1]])
+    cov = t @ np.linalg.pinv(aw.T @ aw) @ t.T * max(1.0, chi2 / dof)
+    return dict(phi_max=c[0], phi_min=c[0] - c[1], phi_max_se=math.sqrt(cov[0, 0]), phi_min_se=math.sqrt(cov[1, 1]),
+                chi2_reduced=chi2 / dof)

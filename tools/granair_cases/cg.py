@@ -4,8 +4,12 @@ dumps and its CSV read back as grids.
     cpu = run(case, "results/cg_rz", {"coordinates": "RZ", "width": 0.03, ...})   (or [(option, value), ...])
     f = read("results/cg_rz.csv")          f["axes"] = ("r", "z"), f["r"], f["z"] (grid values),
                                            f["density"][i_r, i_z], ... (NaN where granairCG masks)
+    f = read(csv, order=("z", "x"))         the same with the fields as [i_z, i_x]
     p, tau = invariants(f, "contact_stress")   tr(sigma)/3 and sqrt(J2) of a tensor field's components
+    bilinear(f["z"], f["x"], f["density"], z, x)   a grid field at points (NaN outside)
+    kernel_share_below(u, cut)              the share of a cut 2-D Gaussian kernel below a line
 """
+import math
 import os
 
 import numpy as np
@@ -31,10 +35,10 @@ def run(case, stem, options, log=None):
     return runner.run(cmd, case, log or os.path.basename(stem))
 
 
-def read(path):
-    """granairCG's CSV as grids: {"axes": resolved coordinate names in file order, each axis'
-    sorted values, every field shaped (n_axis0, n_axis1, ...)}; a file with no coordinate
-    column (a window average) gives scalars."""
+def read(path, order=None):
+    """granairCG's CSV as grids: {"axes": resolved coordinate names in file order (or in
+    `order`, which must name the same axes), each axis' sorted values, every field shaped
+    (n_axis0, n_axis1, ...)}; a file with no coordinate column (a window average) gives scalars."""
     try:
         with open(path) as fh:
             head = fh.readline().strip().split(",")
@@ -60,7 +64,34 @@ def read(path):
         grid = np.full(shape, np.nan)
         grid[tuple(idx)] = data[:, i]
         out[h] = grid
+    if order and tuple(order) != axes:
+        if sorted(order) != sorted(axes):
+            raise CaseError(f"{path}: expected a grid over {', '.join(order)}, found coordinates {', '.join(axes)}")
+        perm = [axes.index(a) for a in order]
+        out = dict({k: (np.transpose(v, perm) if isinstance(v, np.ndarray) and v.ndim == len(axes) else v)
+                    for k, v in out.items()}, axes=tuple(order))
     return out
+
+
+def bilinear(a0, a1, grid, p0, p1):
+    """grid [i0, i1] (on the axis values a0, a1) at the points (p0, p1), bilinear; NaN outside."""
+    i = np.clip(np.searchsorted(a0, p0) - 1, 0, len(a0) - 2)
+    k = np.clip(np.searchsorted(a1, p1) - 1, 0, len(a1) - 2)
+    f0, f1 = (p0 - a0[i]) / (a0[i + 1] - a0[i]), (p1 - a1[k]) / (a1[k + 1] - a1[k])
+    out = (grid[i, k] * (1 - f1) * (1 - f0) + grid[i, k + 1] * f1 * (1 - f0) + grid[i + 1, k] * (1 - f1) * f0
+           + grid[i + 1, k + 1] * f1 * f0)
+    inside = (p0 >= a0[0]) & (p0 <= a0[-1]) & (p1 >= a1[0]) & (p1 <= a1[-1])
+    return np.where(inside, out, np.nan)
+
+
+def kernel_share_below(u, cut=3.0):
+    """Share of the 2-D Gaussian kernel (cut at `cut` widths, normalised over its disc, as
+    granairCG's) whose points lie below a line u widths above its centre (numerical, 1e-9):
+    what of a particle's kernel falls inside a window's edge."""
+    t = np.linspace(-cut, cut, 20001)
+    m = np.exp(-t ** 2 / 2) * np.array([math.erf(math.sqrt(max(cut ** 2 - x ** 2, 0.0) / 2)) for x in t])
+    cdf = np.concatenate([[0.0], np.cumsum(0.5 * (m[1:] + m[:-1]) * np.diff(t))])
+    return np.interp(u, t, cdf / cdf[-1], left=0.0, right=1.0)
 
 
 def invariants(f, name):

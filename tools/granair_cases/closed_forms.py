@@ -41,6 +41,8 @@ import math
 
 import numpy as np
 
+from . import numerics
+
 G = 9.81
 
 
@@ -77,14 +79,8 @@ def carleton_velocity(B, theta_deg, d, rho_p, rho_f=0.0, mu=0.0, g=G):
     """V0 [m/s] solving Carleton's balance (dry when rho_f or mu is 0)."""
     a = 4.0 * math.sin(math.radians(theta_deg)) / B
     c = 15.0 * rho_f ** (1.0 / 3.0) * mu ** (2.0 / 3.0) / (rho_p * d ** (5.0 / 3.0))
-    lo, hi = 0.0, math.sqrt(g / a)          # the left side grows with V0; dry root is hi
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if a * mid * mid + c * mid ** (4.0 / 3.0) > g:
-            hi = mid
-        else:
-            lo = mid
-    return 0.5 * (lo + hi)
+    # the left side grows with V0; the dry root is sqrt(g / a)
+    return numerics.bisect(lambda v: a * v * v + c * v ** (4.0 / 3.0) - g, 0.0, math.sqrt(g / a))
 
 
 def carleton_ratio(B, theta_deg, d, rho_p, rho_f, mu, g=G):

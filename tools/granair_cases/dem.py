@@ -8,9 +8,13 @@
     read_dump(path)                     a `custom` dump as columns
     read_dumps(path)                    every snapshot of a `custom` dump file: [(step, columns)]
     read_mesh_vtk(path)                 a `dump mesh/vtk` file: points, triangles, per-element fields
+    wall_loads(path)                    its normal and shear stress and area per element (LIGGGHTS mesh stress)
+    numbered(pattern)                   [(step, path)] of numbered outputs (walls_*.vtk), by step
+    merge_dumps(paths, out)             the snapshots of a chunked run's dump files in one, each step once
     write_mesh_vtk(path, ...)           triangles with per-element fields as legacy VTK (ParaView)
     discharge_balance(log)              the particle accounting granairFoam prints at the end
 """
+import glob
 import math
 import os
 import re
@@ -154,6 +158,51 @@ def read_dumps(path):
         out.append((step, {c: data[:, k] for k, c in enumerate(cols)}))
         i = j + 1 + n
     return out
+
+
+def merge_dumps(paths, out):
+    """The snapshots of several `dump custom` files (the chunks of a run: the first step of
+    one is the last of the one before) in one file, each step once, in order; a snapshot
+    a stopped chunk cut short is left out. Returns (out, number of snapshots)."""
+    seen = {}
+    for path in paths:
+        with open(path) as fh:
+            lines = fh.read().splitlines()
+        starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")] + [len(lines)]
+        for a, b in zip(starts[:-1], starts[1:]):
+            n = int(lines[a + 3])
+            if b - a >= 9 + n:
+                seen.setdefault(int(lines[a + 1]), lines[a:a + 9 + n])
+    with open(out, "w") as fh:
+        for step in sorted(seen):
+            fh.write("\n".join(seen[step]) + "\n")
+    return out, len(seen)
+
+
+def numbered(pattern):
+    """[(n, path)] of the files matching a glob pattern whose one `*` stands for a
+    whole number (a step: walls_*.vtk, particles_*.dump, profile_*.csv), by n."""
+    head, tail = pattern.split("*")
+    out = []
+    for path in glob.glob(pattern):
+        mid = path[len(head):len(path) - len(tail)]
+        if mid.isdigit():
+            out.append((int(mid), path))
+    return sorted(out)
+
+
+def wall_loads(path):
+    """(normal, shear stress [Pa], area [m2]) per element of a `dump mesh/vtk ... stress`
+    file: |f.n| / A and |f - (f.n) n| / A of the contact forces of that step (LIGGGHTS'
+    fix mesh/surface/stress), and the triangles' areas."""
+    m = read_mesh_vtk(path)
+    try:
+        f = m["fields"]
+        normal, shear = np.abs(f["normal_stress_average"]), np.abs(f["shear_stress_average"])
+    except KeyError as e:
+        raise CaseError(f"{path}: no field {e} (was the dump written with the `stress` keyword?)")
+    p = m["points"][np.array(m["cells"])]
+    return normal, shear, 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
 
 
 def read_mesh_vtk(path):

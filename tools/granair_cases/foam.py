@@ -43,6 +43,13 @@ def read_field(path, n=None):
     return vals.reshape(count, 3) if width == 3 else vals
 
 
+def nonuniform(values, fmt="%g"):
+    """A field's `nonuniform List<scalar|vector>` for a template (values: n numbers or n x 3)."""
+    rows = [(fmt % v) if isinstance(v, (int, float)) else "(" + " ".join(fmt % c for c in v) + ")" for v in values]
+    kind = "scalar" if not len(values) or isinstance(values[0], (int, float)) else "vector"
+    return f"nonuniform List<{kind}> {len(rows)} ({' '.join(rows)})"
+
+
 def _list(path):
     """The body of the one list in an ASCII OpenFOAM file (after its header)."""
     with open(path) as fh:

@@ -3,6 +3,8 @@
     plt = pyplot()
     field_panels(path, title, cells, rows, xlim, ylim)   cell fields (polygons) at several times
     case_fields(path, title, case, times, rows, ...)     the same from a plane OpenFOAM case
+    cell_map(ax, cells, values, cmap, lim)               one panel of cell polygons coloured by a field
+    grid_map(ax, x, z, values, cmap, lim)                one panel of a grid field [i_z, i_x] (CG fields)
     save(fig, path)
 """
 import os
@@ -25,12 +27,27 @@ def save(fig, path, dpi=120):
     return path
 
 
+def cell_map(ax, cells, values, cmap, lim):
+    """Cell polygons [(x, z) corners] coloured by values on ax; returns the collection (for a colour bar)."""
+    from matplotlib.collections import PolyCollection
+    pc = PolyCollection(cells, array=values, cmap=cmap, edgecolors="face", linewidths=0.2)
+    pc.set_clim(*lim)
+    ax.add_collection(pc)
+    return pc
+
+
+def grid_map(ax, x, z, values, cmap, lim, scale=1e3):
+    """A field on a regular grid (values [i_z, i_x] at the points x, z; gc.cg.read(csv,
+    order=("z", "x"))) on ax, each point a pixel, lengths times scale (mm); returns the image."""
+    ext = [x[0] * scale, x[-1] * scale, z[0] * scale, z[-1] * scale]
+    return ax.imshow(values, origin="lower", extent=ext, cmap=cmap, vmin=lim[0], vmax=lim[1], interpolation="nearest")
+
+
 def field_panels(path, title, cells, rows, xlim, ylim):
     """One row of panels per field, one panel per time, each cell drawn as its
     polygon (cells: [(x, z) corners] in the unit of xlim/ylim). rows: [(label,
     cmap, (vmin, vmax) or None, {t: values})]; None limits give a symmetric
     range (a pressure)."""
-    from matplotlib.collections import PolyCollection
     plt = pyplot()
     times = sorted({t for _, _, _, by_t in rows for t in by_t})
     aspect = (ylim[1] - ylim[0]) / (xlim[1] - xlim[0])
@@ -47,9 +64,7 @@ def field_panels(path, title, cells, rows, xlim, ylim):
             ax.set_title(f"t = {t:g} s", fontsize=9)
             ax.tick_params(labelsize=7)
             if t in by_t:
-                pc = PolyCollection(cells, array=by_t[t], cmap=cmap, edgecolors="face", linewidths=0.2)
-                pc.set_clim(*lim)
-                ax.add_collection(pc)
+                pc = cell_map(ax, cells, by_t[t], cmap, lim)
         axes[i][0].set_ylabel("z [mm]", fontsize=8)
         fig.colorbar(pc, ax=list(axes[i]), fraction=0.04, pad=0.02, label=label)
     return save(fig, path, dpi=110)

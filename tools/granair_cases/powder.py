@@ -6,12 +6,13 @@
     flow_windows(...) mass flow (and outlet gradient) as window means, for plots and level.json
     continuum_outputs(...)   a continuum run's window means CSV, steady rate, outlet gradient, level.json
     check_continuum(...)     its checks: finite, the mass balance (outlet flow integrated, the solver's)
+    air_balance(run, s, t_end, ...)   a coupled run's air volume balance: air in - out, pore growth, powder out
 """
 import os
 
 import numpy as np
 
-from . import dem as dem_io, levels, series
+from . import dem as dem_io, foam, levels, series
 
 
 def continuum(run):
@@ -77,3 +78,21 @@ def check_continuum(c, name, r, tol=0.005, why="VOF keeps the powder to round-of
     c.true(f"{name}: every value of the time series finite", r["finite"], f"{len(r['t'])} rows")
     c.near(f"{name}: powder mass balance (outlet flow integrated)", r["balance"], 0.0, tol, why)
     c.near(f"{name}: solver's mass balance (all boundaries)", r["solver_balance"], 0.0, tol, why)
+
+
+def air_balance(run, s, t_end, air_rho, rho_p, depth_scale=1.0, inflow="top_air_kg_s", outflow="outlet_air_kg_s"):
+    """The air volume balance of a coupled discharge run over 0..t_end (a field time) in
+    the silo above the orifice (z > 0): the air drawn in through the top (monitor
+    `inflow`) and leaving down through the orifice (`outflow`; monitors' flux along +z),
+    the growth of the pore volume sum(eps V) of the cells above z = 0 (0/Cz and 0/V from
+    postProcess writeCellCentres, writeCellVolumes), and the powder volume discharged
+    (s: the time series; discharged_kg of the full depth, depth_scale times the run's).
+    For incompressible air the first difference equals the second, and that the third."""
+    t = s["t"]
+    k, dt = t <= t_end + 1e-9, series.step_lengths(t)
+    z, vol = (foam.read_field(os.path.join(run, "0", f)) for f in ("Cz", "V"))
+    eps = [foam.read_field(os.path.join(foam.time_dir(run, x), "voidfraction"), len(z)) for x in (0, t_end)]
+    return dict(air_in_top_m3=float(-np.sum((s[inflow] * dt)[k]) / air_rho),
+                air_out_orifice_m3=float(-np.sum((s[outflow] * dt)[k]) / air_rho),
+                pore_growth_m3=float(np.sum(((eps[1] - eps[0]) * vol)[z > 0])),
+                powder_out_m3=float(s["discharged_kg"][k][-1] / depth_scale / rho_p))

@@ -4,8 +4,9 @@
     run(["granairFoam"], case, np=2)                 mpirun -np 2 granairFoam -parallel
     mesh(case, np)                                   blockMesh (+ decomposePar for np > 1)
     pool([(name, fn, args), ...], jobs)              independent jobs, a line per finished one
+    liggghts(case, "dem/in.fill", "fill")            a stand-alone LIGGGHTS stage (its log and screen in log/)
     run(cmd, case, stop_when=done)                   stop an OpenFOAM run (stopAt writeNow) once done()
-    chain(case, script, segments, first)             a LIGGGHTS run in restart segments, resumable
+    chain, chain_cost                                the old names of chunks.liggghts and chunks.cost
 
 Every step writes case/log/<name>.log; a failure raises CaseError with the
 command, the folder and the last lines of its log. CPU time is user + system
@@ -80,63 +81,31 @@ def run(cmd, cwd, log=None, np=1, parallel=True, stop_when=None, poll=1.0):
     return usage.ru_utime + usage.ru_stime
 
 
+def liggghts(case, script, step, log=None, screen=None, np=1, var=()):
+    """A stand-alone LIGGGHTS stage: `liggghts -in script -log <log> -screen <screen>` in
+    case, LIGGGHTS' log at `log` (default log/<step>.liggghts), its screen output at
+    `screen` (default log/<step>.screen; False: into the step's log, log/<step>.log),
+    `-var name value` for each item of var (a dict or pairs); under mpirun for np > 1.
+    Returns the CPU seconds."""
+    cmd = ["liggghts", "-in", script, "-log", log or f"log/{step}.liggghts"]
+    if screen is not False:
+        cmd += ["-screen", screen or f"log/{step}.screen"]
+    for key, value in (var.items() if isinstance(var, dict) else var):
+        cmd += ["-var", str(key), str(value)]
+    return run(cmd, case, step, np=np, parallel=False)
+
+
 def chain(case, script, segments, first, name="segment", label="granair"):
-    """Run the stand-alone LIGGGHTS `script` in `case` as a chain of segments, each
-    starting from the previous one's restart (long runs that must survive a stop).
-    Segment k = 1, 2, ... gets LIGGGHTS variables (-var) segments[k-1] (a dict)
-    plus seg = k, restart_in (`first` for k = 1, else the restart of k - 1) and
-    restart_out; it must end with `write_restart ${restart_out}`. The restart
-    is written under a temporary name and kept once LIGGGHTS ends without error,
-    with a marker restart/<name>_<k>.done (its CPU and wall seconds: chain_cost):
-    a stopped chain resumes at the first segment without its marker, the
-    finished ones are skipped. Only the newest restart is kept (restart/<name>_<k>.restart). Logs: log/<name>_<k>.log (the
-    command's output), log/<name>_<k>.liggghts (LIGGGHTS' log). Returns (CPU
-    seconds of the segments run now, number of segments skipped)."""
-    rdir = os.path.join(case, "restart")
-    os.makedirs(rdir, exist_ok=True)
-    done = lambda k: os.path.join(rdir, f"{name}_{k}.done")                   # noqa: E731
-    restart = lambda k: os.path.join("restart", f"{name}_{k}.restart")       # noqa: E731
-    cpu, skipped, t0 = 0.0, 0, time.time()
-    for k, values in enumerate(segments, 1):
-        if os.path.exists(done(k)):
-            skipped += 1
-            continue
-        src = first if k == 1 else restart(k - 1)
-        if not os.path.exists(os.path.join(case, src)):
-            raise CaseError(f"{case}: segment {k} of {len(segments)} needs the restart {src}, which does not exist "
-                            f"(a finished segment's restart was removed: run the chain again from a clean folder)")
-        tmp = restart(k) + ".part"
-        args = dict(values, seg=k, restart_in=src, restart_out=tmp)
-        cmd = ["liggghts", "-in", script, "-log", f"log/{name}_{k}.liggghts", "-screen", f"log/{name}_{k}.screen"]
-        for key, v in args.items():
-            cmd += ["-var", str(key), str(v)]
-        t1 = time.time()
-        seg_cpu = run(cmd, case, f"{name}_{k}", parallel=False)
-        cpu += seg_cpu
-        if not os.path.exists(os.path.join(case, tmp)):
-            raise CaseError(f"{case}: segment {k} ended without writing {tmp} (does {script} end with "
-                            f"`write_restart ${{restart_out}}`?)")
-        os.replace(os.path.join(case, tmp), os.path.join(case, restart(k)))
-        with open(done(k), "w") as fh:
-            fh.write(f"cpu_s = {seg_cpu:.2f}\nwall_s = {time.time() - t1:.1f}\n")
-        if k > 1 and os.path.exists(os.path.join(case, restart(k - 1))):
-            os.remove(os.path.join(case, restart(k - 1)))
-        print(f"{label}: segment {k}/{len(segments)} done ({cpu:.0f} CPU-s, {time.time() - t0:.0f} s since start)",
-              flush=True)
-    return cpu, skipped
+    """chunks.liggghts under its old name: (CPU s of the segments run now, segments skipped)."""
+    from . import chunks
+    rec = chunks.liggghts(case, script, segments, first, name, label)
+    return sum(c["cpu_s"] for c in rec["chunks"][len(rec["chunks"]) - rec["ran"]:]), len(rec["chunks"]) - rec["ran"]
 
 
 def chain_cost(case, name="segment"):
-    """(CPU seconds, wall seconds, segments) of a chain's finished segments, from their markers."""
-    cpu = wall = 0.0
-    n = 0
-    rdir = os.path.join(case, "restart")
-    for f in sorted(os.listdir(rdir)) if os.path.isdir(rdir) else []:
-        if f.startswith(name + "_") and f.endswith(".done"):
-            with open(os.path.join(rdir, f)) as fh:
-                kv = dict(line.split(" = ") for line in fh.read().splitlines() if " = " in line)
-            cpu, wall, n = cpu + float(kv.get("cpu_s", 0)), wall + float(kv.get("wall_s", 0)), n + 1
-    return cpu, wall, n
+    """chunks.cost under its old name."""
+    from . import chunks
+    return chunks.cost(case, name)
 
 
 def clean(path):

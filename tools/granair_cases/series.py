@@ -1,4 +1,4 @@
-"""Time series: CSV in and out, steady windows and rates, window means.
+"""Time series: CSV in and out, steady windows and rates, window means, block errors.
 
 A series is a dict {column: numpy array}, as granairFoam's and
 granairContinuumFoam's postProcessing/timeSeries.csv hold them: one row per
@@ -124,6 +124,33 @@ def window_means(t, dt, columns, width, keep_last=0.0, tol=0.0):
         if closes:
             start, i0 = float(t[i]), i + 1
     return np.array(centres), [np.array(m) for m in means]
+
+
+def mean_sd(values):
+    """(mean, sample standard deviation (n - 1)) of the finite values (None and NaN left
+    out): the spread of a result over repeated runs (seeds); NaN SD for one value."""
+    x = np.array([v for v in values if v is not None and np.isfinite(v)], dtype=float)
+    if not len(x):
+        return float("nan"), float("nan")
+    return float(x.mean()), float(x.std(ddof=1)) if len(x) > 1 else float("nan")
+
+
+def block_errors(tables, fn, keys, blocks=5):
+    """Standard errors of the results of fn by block averaging: the snapshots
+    `tables` (dicts of arrays, in time order) in `blocks` consecutive blocks,
+    each block's mean table given to fn (which returns a dict), and for each
+    of `keys` the spread of the block results over sqrt(blocks) (NaN with one
+    block): errors of a time average whose snapshots are correlated."""
+    results = []
+    for b in [b for b in np.array_split(np.arange(len(tables)), blocks) if len(b)]:
+        mean = {k: (np.mean([tables[j][k] for j in b], axis=0) if isinstance(v, np.ndarray) else v)
+                for k, v in tables[0].items()}
+        results.append(fn(mean))
+    out = {}
+    for k in keys:
+        x = np.array([r[k] for r in results])
+        out[k] = float(np.std(x, ddof=1) / np.sqrt(len(x))) if len(x) > 1 else float("nan")
+    return out
 
 
 def write_keys(path, pairs, header=None):

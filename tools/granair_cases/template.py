@@ -16,7 +16,10 @@ serve several templates).
     render(src, dst, values, ["dem"])   only some of its files or folders
     fill(text, values, where)           one text
     constants(parameters)               the upper-case numbers of a case's parameters.py as values
+    save_values(path, values)           the run's numbers as JSON beside it
+    check_values(path, values, hint)    a resumed run must have been set up with the same numbers
 """
+import json
 import os
 import re
 import shutil
@@ -83,3 +86,20 @@ def write(path, text):
     with open(path, "w") as fh:
         fh.write(text)
     return path
+
+
+def save_values(path, values):
+    """The numbers a run folder was set up with (JSON): a resumed run checks them (check_values)."""
+    return write(path, json.dumps(values, indent=1))
+
+
+def check_values(path, values, hint="remove the folder to start again"):
+    """A run resumed from path's folder must have been set up with these values
+    (as JSON holds them); CaseError names up to four that differ, and the hint."""
+    with open(path) as fh:
+        old = json.load(fh)
+    new = json.loads(json.dumps(values))
+    diff = [k for k in sorted(set(old) | set(new)) if old.get(k) != new.get(k)]
+    if diff:
+        raise CaseError(f"{os.path.dirname(path)} was set up with other numbers ("
+                        f"{', '.join(f'{k}: {old.get(k)} vs {new.get(k)}' for k in diff[:4])}); {hint}")

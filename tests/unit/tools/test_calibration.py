@@ -56,5 +56,22 @@ for text, material, want in ((LITERATURE.replace("    phiMin      0.443;\n", "")
         if want not in str(e):
             failures.append(f"error does not name {want}: {e}")
 
+# The fits: points of a known mu(I) and phi(I) with a small deterministic scatter
+# come back within a few of their standard errors (and the errors are small).
+import numpy as np  # noqa: E402
+truth = dict(mu_s=0.36, mu_2=0.75, I0=0.12)
+i = np.logspace(-3, -0.5, 9)
+wiggle = 0.004 * np.sin(7.0 * np.arange(len(i)))
+fm = calibration.fit_mu(i, calibration.mu_jop(i, truth) + wiggle, np.full(len(i), 0.004))
+for k in truth:
+    if abs(fm[k] - truth[k]) > 3 * fm[k + "_se"] or fm[k + "_se"] > 0.2 * truth[k]:
+        failures.append(f"fit_mu {k}: {fm[k]:.4g} +- {fm[k + '_se']:.2g} vs {truth[k]}")
+exact = calibration.fit_mu(i, calibration.mu_jop(i, truth), np.full(len(i), 0.004))
+if any(abs(exact[k] - truth[k]) > 1e-6 * truth[k] for k in truth):
+    failures.append(f"fit_mu of exact points: {exact} vs {truth}")
+fp = calibration.fit_phi(i, 0.62 - 0.2 * i + 0.1 * wiggle, np.full(len(i), 0.001))
+if abs(fp["phi_max"] - 0.62) > 3 * fp["phi_max_se"] or abs(fp["phi_min"] - 0.42) > 3 * fp["phi_min_se"]:
+    failures.append(f"fit_phi: {fp} vs phi_max 0.62, phi_min 0.42")
+
 print("\n".join(failures) or "calibration: all checks passed")
 sys.exit(1 if failures else 0)

@@ -36,6 +36,13 @@ class Template(unittest.TestCase):
         text = "pFinal { $p; } print \"${vrms} $n\" a@b.c"
         self.assertEqual(gc.template.fill(text, {}), text)
 
+    def test_saved_values_must_match_on_resume(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = gc.template.save_values(os.path.join(d, "run", "case.json"), dict(A=1, B=(1, 2), C="x"))
+            gc.template.check_values(path, dict(A=1, B=[1, 2], C="x"))          # a tuple is saved as a list
+            with self.assertRaisesRegex(CaseError, r"other numbers \(A: 1 vs 2, D: None vs 0\); start again"):
+                gc.template.check_values(path, dict(A=2, B=[1, 2], C="x", D=0), "start again")
+
     def test_render_copies_a_folder_or_part_of_it(self):
         with tempfile.TemporaryDirectory() as d:
             write(os.path.join(d, "t", "system", "controlDict"), "deltaT @DT:g@;\n")
@@ -194,6 +201,12 @@ class Dem(unittest.TestCase):
             self.assertEqual([s for s, _ in steps], [0, 10, 20])
             np.testing.assert_array_equal(steps[0][1]["z"], [0.5, 0.25])
             self.assertEqual(len(steps[1][1]["id"]), 0)
+            # two chunks' dumps (the second starts where the first ended) merged, each step once
+            write(os.path.join(d, "cv2.dump"), snap.format(20, 1) + "8 0.9\n" + snap.format(40, 1) + "9 0.3\n")
+            out, n = gc.dem.merge_dumps([os.path.join(d, "cv.dump"), os.path.join(d, "cv2.dump")], os.path.join(d, "all"))
+            merged = gc.dem.read_dumps(out)
+            self.assertEqual((n, [s for s, _ in merged]), (4, [0, 10, 20, 40]))
+            self.assertEqual(float(merged[2][1]["z"][0]), 0.1)         # the first chunk's copy of step 20
             # a dump local (the force chains: compute pair/gran/local)
             write(os.path.join(d, "pairs.dump"), "ITEM: TIMESTEP\n5\nITEM: NUMBER OF ENTRIES\n1\nITEM: BOX BOUNDS ff ff ff\n"
                   "0 1\n0 1\n0 1\nITEM: ENTRIES c_p[1] c_p[2] \n0.5 -2.5\n")
@@ -217,6 +230,17 @@ class Dem(unittest.TestCase):
             np.testing.assert_array_equal(back["fields"]["p_Pa"], [1.5, 2.5])
             with self.assertRaisesRegex(CaseError, "field q has 1 values for 2 triangles"):
                 gc.dem.write_mesh_vtk(os.path.join(d, "x.vtk"), m["points"], np.array(m["cells"]), {"q": [1]})
+            # the wall loads of a stress dump (normal, shear, area); without the shear field: named
+            write(os.path.join(d, "walls_20.vtk"), read(os.path.join(d, "m.vtk")).replace(
+                "FIELD FieldData 2", "FIELD FieldData 3").replace("meshid", "shear_stress_average 1 2 double\n-1 2\nmeshid"))
+            normal, shear, area = gc.dem.wall_loads(os.path.join(d, "walls_20.vtk"))
+            np.testing.assert_array_equal(np.c_[normal, shear, area], [[10.5, 1, 0.5], [0, 2, 0.5]])
+            with self.assertRaisesRegex(CaseError, "shear_stress_average"):
+                gc.dem.wall_loads(os.path.join(d, "m.vtk"))
+            write(os.path.join(d, "walls_3.vtk"), "")
+            write(os.path.join(d, "walls_fill.vtk"), "")
+            self.assertEqual(gc.dem.numbered(os.path.join(d, "walls_*.vtk")),
+                             [(3, os.path.join(d, "walls_3.vtk")), (20, os.path.join(d, "walls_20.vtk"))])
 
     def test_dump_and_balance(self):
         with tempfile.TemporaryDirectory() as d:
@@ -286,33 +310,105 @@ class CG(unittest.TestCase):
                 gc.cg.read(os.path.join(d, "bad.csv"))
 
 
-class Chain(unittest.TestCase):
-    def test_segments_resume_and_need_their_restart(self):
-        """A fake `liggghts` that writes restart_out: the second call skips the finished segments."""
-        with tempfile.TemporaryDirectory() as d:
-            fake = os.path.join(d, "bin", "liggghts")
-            write(fake, "#!/bin/sh\nwhile [ $# -gt 0 ]; do [ \"$1\" = -var ] && [ \"$2\" = restart_out ] && "
-                  "echo \"$@\" > \"$3\"; shift; done\n")
-            os.chmod(fake, 0o755)
-            old = os.environ["PATH"]
-            os.environ["PATH"] = os.path.dirname(fake) + os.pathsep + old
-            try:
-                case = os.path.join(d, "case")
-                write(os.path.join(case, "fill.restart"), "x")
-                segs = [dict(nsteps=10), dict(nsteps=20)]
-                cpu, skipped = gc.runner.chain(case, "in.seg", segs, "fill.restart", label="test")
-                self.assertEqual(skipped, 0)
-                self.assertTrue(os.path.exists(os.path.join(case, "restart", "segment_2.restart")))
-                self.assertFalse(os.path.exists(os.path.join(case, "restart", "segment_1.restart")))
-                self.assertEqual(gc.runner.chain_cost(case)[2], 2)
-                cpu, skipped = gc.runner.chain(case, "in.seg", segs + [dict(nsteps=30)], "fill.restart", label="test")
-                self.assertEqual(skipped, 2)
-                self.assertEqual(gc.runner.chain_cost(case)[2], 3)
-                os.remove(os.path.join(case, "restart", "segment_3.restart"))
-                with self.assertRaisesRegex(CaseError, "needs the restart"):
-                    gc.runner.chain(case, "in.seg", segs + [dict(nsteps=30)] * 2, "fill.restart", label="test")
-            finally:
-                os.environ["PATH"] = old
+class Numerics(unittest.TestCase):
+    def test_roots_minima_block_errors_field_lists(self):
+        self.assertAlmostEqual(gc.numerics.bisect(lambda x: x * x - 2, 0, 2), math.sqrt(2), places=14)
+        self.assertAlmostEqual(gc.numerics.bisect(lambda x: 1 / x - 1e3, 1e-9, 1, increasing=False, geometric=True),
+                               1e-3, places=14)
+        self.assertAlmostEqual(gc.numerics.golden(lambda x: (x - 0.3) ** 2, 0, 1), 0.3, places=7)
+        self.assertAlmostEqual(gc.numerics.golden(lambda x: math.log(x / 0.02) ** 2, 1e-4, 10, log=True), 0.02, places=7)
+        # block errors: 4 blocks of two snapshots; block means 1, 2, 3, 4 -> se = std / 2
+        tables = [dict(v=np.array([x]), axes=("z",)) for x in (1, 1, 2, 2, 3, 3, 4, 4)]
+        se = gc.series.block_errors(tables, lambda t: dict(m=float(t["v"][0])), ["m"], 4)
+        self.assertAlmostEqual(se["m"], np.std([1, 2, 3, 4], ddof=1) / 2)
+        self.assertTrue(math.isnan(gc.series.block_errors(tables[:1], lambda t: dict(m=1.0), ["m"])["m"]))
+        m, sd = gc.series.mean_sd([1.0, None, 3.0, float("nan")])
+        self.assertEqual((m, sd), (2.0, math.sqrt(2)))
+        self.assertTrue(math.isnan(gc.series.mean_sd([5.0])[1]))
+        self.assertEqual(gc.foam.nonuniform([1.0, 0.0]), "nonuniform List<scalar> 2 (1 0)")
+        self.assertEqual(gc.foam.nonuniform([(0.5, 0, 0)]), "nonuniform List<vector> 1 ((0.5 0 0))")
+
+
+class FakeProgram:
+    """A shell script on PATH in place of a program (liggghts, granairFoam)."""
+    def __init__(self, d, name, body):
+        self.path = os.path.join(d, "bin", name)
+        write(self.path, "#!/bin/sh\n" + body)
+        os.chmod(self.path, 0o755)
+
+    def __enter__(self):
+        self.old = os.environ["PATH"]
+        os.environ["PATH"] = os.path.dirname(self.path) + os.pathsep + self.old
+
+    def __exit__(self, *exc):
+        os.environ["PATH"] = self.old
+
+
+# writes the file after `-var restart_out`, and the value of `-var n` to out_<seg>.txt
+FAKE_LIGGGHTS = ('while [ $# -gt 0 ]; do [ "$1" = -var ] && [ "$2" = restart_out ] && echo "$@" > "$3"; '
+                 '[ "$1" = -var ] && [ "$2" = n ] && n=$3; [ "$1" = -var ] && [ "$2" = seg ] && s=$3; shift; done\n'
+                 'echo $n > out_$s.txt\n')
+# a restart point at the controlDict's endTime, as granairFoam writes one
+FAKE_FOAM = ('t=$(sed -n "s/^endTime *\\(.*\\);/\\1/p" system/controlDict)\n'
+             'mkdir -p restart/$t && touch restart/$t/coupling && echo "to $t"\n')
+
+
+class Chunks(unittest.TestCase):
+    def test_liggghts_segments_resume_and_need_their_restart(self):
+        """The second call skips the finished segments; a removed restart stops it with a message."""
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "liggghts", FAKE_LIGGGHTS):
+            case = os.path.join(d, "case")
+            write(os.path.join(case, "fill.restart"), "x")
+            segs = [dict(n=10), dict(n=20)]
+            rec = gc.chunks.liggghts(case, "in.seg", segs, "fill.restart", label="test", progress=lambda s: None)
+            self.assertEqual((rec["ran"], rec["reason"]), (2, "2 segments"))
+            self.assertTrue(os.path.exists(os.path.join(case, "restart", "segment_2.restart")))
+            self.assertFalse(os.path.exists(os.path.join(case, "restart", "segment_1.restart")))
+            self.assertEqual(gc.chunks.cost(case, "segment")[2], 2)
+            # the old names
+            cpu, skipped = gc.runner.chain(case, "in.seg", segs + [dict(n=30)], "fill.restart", label="test")
+            self.assertEqual(skipped, 2)
+            self.assertEqual(gc.runner.chain_cost(case)[2], 3)
+            os.remove(os.path.join(case, "restart", "segment_3.restart"))
+            with self.assertRaisesRegex(CaseError, "needs the restart"):
+                gc.chunks.liggghts(case, "in.seg", segs + [dict(n=30)] * 2, "fill.restart", progress=lambda s: None)
+
+    def test_liggghts_segments_from_a_function_with_what_they_collect(self):
+        """segments(k, rec) sees the finished entries; collect() adds to each; old markers are read."""
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "liggghts", FAKE_LIGGGHTS):
+            case = os.path.join(d, "case")
+            write(os.path.join(case, "fill.restart"), "x")
+            write(os.path.join(case, "restart", "seg_1.done"), "cpu_s = 1.5\nwall_s = 2.0\n")
+            write(os.path.join(case, "restart", "seg_1.restart"), "x")
+
+            def plan(k, rec):
+                return None if k > 3 else dict(n=sum(c["n"] for c in rec["chunks"][1:]) + k)
+
+            def collect(c, k):
+                return dict(n=int(read(os.path.join(c, f"out_{k}.txt"))))
+            rec = gc.chunks.liggghts(case, "in.seg", plan, "fill.restart", "seg", collect=collect,
+                                     progress=lambda s: None)
+            self.assertEqual([c["k"] for c in rec["chunks"]], [1, 2, 3])
+            self.assertEqual(rec["chunks"][0]["cpu_s"], 1.5)          # from the marker
+            self.assertEqual([c.get("n") for c in rec["chunks"]], [None, 2, 5])
+            self.assertEqual(rec["ran"], 2)
+
+    def test_foam_chunks_to_finished_and_to_a_later_t_max(self):
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "granairFoam", FAKE_FOAM):
+            case = os.path.join(d, "case")
+            write(os.path.join(case, "system", "controlDict"),
+                  "startFrom latestTime;\nstartTime 0;\nendTime 1;\n")
+            rec = gc.chunks.foam(case, 0.25, lambda c: None, 0.5, progress=lambda s: None)
+            self.assertEqual([(c["from"], c["to"]) for c in rec["chunks"]], [(0.0, 0.25), (0.25, 0.5)])
+            self.assertEqual((rec["reason"], rec["t_end"]), ("t_max = 0.5 s", 0.5))
+            self.assertIn("startTime 0.25;\nendTime 0.5;", read(os.path.join(case, "system", "controlDict")))
+            self.assertTrue(os.path.exists(os.path.join(case, "log", "granairFoam_0.25-0.5.log")))
+            # a later t_max goes on; finished() ends it; the newest two restart points are kept
+            empty = lambda c: "empty" if gc.chunks.latest_restart(c)[0] >= 1 else None   # noqa: E731
+            rec = gc.chunks.foam(case, 0.25, empty, 2.0, progress=lambda s: None)
+            self.assertEqual((rec["ran"], rec["reason"], rec["t_end"]), (2, "empty", 1.0))
+            self.assertEqual(sorted(os.listdir(os.path.join(case, "restart"))), ["0.75", "1"])
+            self.assertEqual(gc.chunks.foam(case, 0.25, empty, 2.0)["ran"], 0)
 
 
 if __name__ == "__main__":
