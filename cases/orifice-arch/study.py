@@ -141,16 +141,7 @@ def floor_stl(g, R):
     to beyond the silo wall, or two strips beside the slit |x| < R across the gap."""
     d, quads = g["d"], []
     if g["variant"] == "silo":
-        n = 96
-        r0 = R * math.sqrt(2 * math.pi / (n * math.sin(2 * math.pi / n)))
-        r1 = g["R_s"] + 1.5 * d
-        rings = max(1, math.ceil(math.log(r1 / r0) / math.log(1 + 2 * math.pi / n)))
-        radii = [r0 * (r1 / r0) ** (k / rings) for k in range(rings + 1)]
-        for a, b in zip(radii, radii[1:]):
-            for j in range(n):
-                t0, t1 = 2 * math.pi * j / n, 2 * math.pi * (j + 1) / n
-                quads.append([(a * math.cos(t0), a * math.sin(t0), 0.0), (b * math.cos(t0), b * math.sin(t0), 0.0),
-                              (b * math.cos(t1), b * math.sin(t1), 0.0), (a * math.cos(t1), a * math.sin(t1), 0.0)])
+        quads = gc.stl_walls.annulus(0.0, R, g["R_s"] + 1.5 * d, 96)
     else:
         y, x1 = g["half_gap"] + 0.25 * d, g["width"] / 2 + 0.5 * d
         pieces = max(1, math.ceil((x1 - R) / d))
