@@ -89,17 +89,11 @@ def _reduce(f, variant):
 
 
 def _write_reduced(path, red, variant):
-    ax = "r" if variant == "silo" else "x"
-    A, Z = np.meshgrid(red[ax], red["z"], indexing="ij")
-    cols = [(ax, A.ravel()), ("z", Z.ravel())] + [(k, red[k].ravel()) for k in red if k not in (ax, "z")]
-    gc.series.write_csv(path, cols, fmt="{:.6g}")
+    gc.cg_grids.write(path, red, "r" if variant == "silo" else "x")
 
 
 def read_reduced(path, variant):
-    t = gc.series.read_csv(path)
-    ax = "r" if variant == "silo" else "x"
-    a, z = np.unique(t[ax]), np.unique(t["z"])
-    return dict({ax: a, "z": z}, **{k: v.reshape(len(a), len(z)) for k, v in t.items() if k not in (ax, "z")})
+    return gc.cg_grids.read(path, "r" if variant == "silo" else "x")
 
 
 def arch(red, variant, R):
@@ -162,13 +156,7 @@ def arch_contact(red, variant, R, rho_b):
 
 def fit_alpha(r, zc, R):
     """alpha of z_c / R = alpha (1 - (r / R)^2) (least squares) and its standard error."""
-    f = 1 - (r / R) ** 2
-    y = zc / R
-    if len(f) < 2:
-        return math.nan, math.nan
-    alpha = float(np.sum(f * y) / np.sum(f * f))
-    res = y - alpha * f
-    return alpha, float(math.sqrt(np.sum(res * res) / (len(f) - 1) / np.sum(f * f)))
+    return gc.fits.through_origin(1 - (r / R) ** 2, zc / R)
 
 
 def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
@@ -265,31 +253,14 @@ def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
 
 
 def mass_integral(case, stem, variant, g):
-    """int rho dV of a granairCG CSV on its grid (RZ: 2 pi r dr dz; XZ: dx dz x the gap) and the
-    particle mass in the window granairCG logged (the snapshots' mean)."""
-    f = gc.cg.read(os.path.join(case, stem + ".csv"))
-    z = f["z"]
-    dz = z[1] - z[0]
-    if variant == "silo":
-        r = f["r"]
-        dr = r[1] - r[0]
-        grid = float(np.sum(f["density"] * (2 * math.pi * r * dr)[:, None]) * dz)
-        # The midpoint rule in r of f(r) = 2 pi r rho(r) is not spectrally exact as in a
-        # Cartesian grid: f'(0) = 2 pi rho(0) != 0 leaves the Euler-Maclaurin end term
-        # M - int = (dr^2 / 24) f'(0) (0.2 % for dr = d in a silo of R_s = 6 d). Removed
-        # here with rho(0) ~ the first ring's density; the next term is ~3 % of this one.
-        end_term = float(dr * dr / 24 * 2 * math.pi * np.sum(f["density"][0, :]) * dz)
-        grid_raw, grid = grid, grid - end_term
-    else:
-        x = f["x"]
-        grid = float(np.sum(f["density"]) * (x[1] - x[0]) * dz * 2 * g["half_gap"])
-        grid_raw = grid
-    with open(os.path.join(case, "log", os.path.basename(stem) + ".log")) as fh:
-        m = re.search(r"mass on the grid (\S+) kg, particle mass in the window (\S+) kg", fh.read())
-    if not m:
-        raise gc.CaseError(f"{case}/log/{os.path.basename(stem)}.log: no 'mass on the grid' line")
-    return dict(grid_mass_kg=grid, grid_mass_midpoint_kg=grid_raw, granairCG_grid_mass_kg=float(m.group(1)), particle_mass_kg=float(m.group(2)),
-                relative_difference=grid / float(m.group(2)) - 1)
+    """int rho dV of a granairCG CSV on its grid (gc.cg_grids.mass: RZ less the midpoint
+    rule's end term at the axis; XZ x the gap) and the particle mass in the window
+    granairCG logged (the snapshots' mean)."""
+    grid, raw = gc.cg_grids.mass(gc.cg.read(os.path.join(case, stem + ".csv")),
+                                 None if variant == "silo" else 2 * g["half_gap"])
+    logged, particles = gc.cg_grids.logged_mass(os.path.join(case, "log", os.path.basename(stem) + ".log"))
+    return dict(grid_mass_kg=grid, grid_mass_midpoint_kg=raw, granairCG_grid_mass_kg=logged,
+                particle_mass_kg=particles, relative_difference=grid / particles - 1)
 
 
 def check(c, a, variant, R_d):

@@ -46,6 +46,9 @@ SETTLE_VRMS = 0.01                # settled when the rms speed < this x sqrt(g d
 FEED_HEIGHT = 4.0                 # the re-insertion region above the fill: this many d tall
 FEED_FRACTION = 0.30              # re-insertion: fill that region to this solid fraction, ...
 FEED_EVERY = 0.25                 # ... every this many t_d (the free surface stays at the fill height)
+FEED_SPEED_2D = 2.0               # monolayer: the re-inserted particles move down at this x sqrt(g d) (the 3-D
+                                  # silo's at rest): from rest a layer 4 d tall fed 88 per t_d, its R = 17 d slit
+                                  # took 130 (README "Flow rate")
 SINK_DEPTH = 4.0                  # particles are deleted (and counted removed) this far below the floor [d]
 PRINT_EVERY = 0.05                # counts written every this many t_d
 GAP_2D = 1.1                      # monolayer: plate gap [d] ("slightly above d")
@@ -66,7 +69,7 @@ SIZES = {
                  kernels=[("gauss", 1.0), ("heaviside", 1.0), ("gauss", 0.5)], block_count=2),
     # run on this machine (README "Sizes"): what two cores shared by six jobs finish in an hour
     "study": dict(silo=dict(R_s=12.0, h=24.0, R=[3.0, 4.0, 5.0], cg=[4.0, 5.0]),
-                  slab=dict(width=100.0, h=50.0, R=[17.0, 26.0], cg=[17.0, 26.0]),
+                  slab=dict(width=200.0, h=50.0, R=[17.0, 26.0], cg=[17.0, 26.0]),   # 100 d wide: the slit a third to half
                   transient=6.0, average=14.0, snapshot=0.5, segment=5.0, settle=(10.0, 40.0),
                   kernels=[("gauss", 1.0), ("heaviside", 1.0), ("gauss", 0.5)], block_count=4),
     # the reference's R = 16 d with a silo 2.5 R wide (README "Sizes": ~4.6e5 particles,

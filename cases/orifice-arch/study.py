@@ -102,9 +102,10 @@ def values(size, variant, R_d=None):
              Z_SINK=g["z_sink"], FEED_EVERY_STEPS=max(1, round(P.FEED_EVERY * P.T_D / v["DT"])),
              PRINT_EVERY_STEPS=st["print"], THERMO_EVERY=chunk, GRANAIR_ROOT=os.environ.get("GRANAIR_ROOT", ROOT))
     if variant == "silo":
-        v.update(R_S=g["R_s"], R_S_D=g["R_s"] / d, R_FEED=g["R_s"] - 1e-3 * d, N_PHI=96)
+        v.update(R_S=g["R_s"], R_S_D=g["R_s"] / d, R_FEED=g["R_s"] - 1e-3 * d, N_PHI=96, FEED_VZ="0.0")
     else:
-        v.update(HALF_GAP=g["half_gap"], HALF_WIDTH=g["width"] / 2, WIDTH_D=g["width"] / d)
+        v.update(HALF_GAP=g["half_gap"], HALF_WIDTH=g["width"] / 2, WIDTH_D=g["width"] / d,
+                 FEED_VZ=f"{-P.FEED_SPEED_2D * math.sqrt(P.G * d):.6g}")
     if R_d is not None:
         v.update(R_D=R_d, R=R_d * d)
     return v, g
@@ -140,16 +141,7 @@ def floor_stl(g, R):
     to beyond the silo wall, or two strips beside the slit |x| < R across the gap."""
     d, quads = g["d"], []
     if g["variant"] == "silo":
-        n = 96
-        r0 = R * math.sqrt(2 * math.pi / (n * math.sin(2 * math.pi / n)))
-        r1 = g["R_s"] + 1.5 * d
-        rings = max(1, math.ceil(math.log(r1 / r0) / math.log(1 + 2 * math.pi / n)))
-        radii = [r0 * (r1 / r0) ** (k / rings) for k in range(rings + 1)]
-        for a, b in zip(radii, radii[1:]):
-            for j in range(n):
-                t0, t1 = 2 * math.pi * j / n, 2 * math.pi * (j + 1) / n
-                quads.append([(a * math.cos(t0), a * math.sin(t0), 0.0), (b * math.cos(t0), b * math.sin(t0), 0.0),
-                              (b * math.cos(t1), b * math.sin(t1), 0.0), (a * math.cos(t1), a * math.sin(t1), 0.0)])
+        quads = gc.stl_walls.annulus(0.0, R, g["R_s"] + 1.5 * d, 96)
     else:
         y, x1 = g["half_gap"] + 0.25 * d, g["width"] / 2 + 0.5 * d
         pieces = max(1, math.ceil((x1 - R) / d))
@@ -161,14 +153,10 @@ def floor_stl(g, R):
 
 
 def sink_stl(g):
-    """The sink plane z = z_sink across the whole box, in pieces about d wide."""
+    """The sink plane z = z_sink across the whole box, in tiles about 4 d wide."""
     hx, hy = g["half_x"] - 0.1 * g["d"], g["half_y"] - 0.1 * g["d"]
     nx, ny = max(1, math.ceil(2 * hx / (4 * g["d"]))), max(1, math.ceil(2 * hy / (4 * g["d"])))
-    xs = [-hx + 2 * hx * i / nx for i in range(nx + 1)]
-    ys = [-hy + 2 * hy * j / ny for j in range(ny + 1)]
-    z = g["z_sink"]
-    quads = [[(a, c, z), (b, c, z), (b, e, z), (a, e, z)] for a, b in zip(xs, xs[1:]) for c, e in zip(ys, ys[1:])]
-    return gc.dem.stl("sink", quads)
+    return gc.dem.stl("sink", gc.stl_walls.tiles(g["z_sink"], -hx, hx, -hy, hy, nx, ny))
 
 
 def render(variant, dst, v, common, own):
@@ -203,13 +191,8 @@ def fill(a, variant):
     with open(os.path.join(case, "log", "fill.liggghts")) as fh:
         settled = [ln.strip() for ln in fh if ln.startswith("granair fill:")][-1]
     dump = gc.dem.read_dump(os.path.join(case, "dem", "fill.dump"))
-    z, m = dump["z"], dump["mass"]
-    k_top = 200 if variant == "silo" else 20
-    top = float(np.mean(np.sort(z)[::-1][:k_top]))
-    z0, z1 = 2 * g["d"], top - 2 * g["d"]
-    sel = (z > z0) & (z < z1)
     area = math.pi * g["R_s"] ** 2 if variant == "silo" else g["width"] * 2 * g["half_gap"]
-    rho_b = float(m[sel].sum() / (area * (z1 - z0)))
+    rho_b, top = gc.outlet.bulk_density(dump["z"], dump["mass"], area, g["d"], k_top=200 if variant == "silo" else 20)
     keys = [("variant", variant), ("particles_packed", len(atoms)), ("settled", settled), ("settled_top_m", top),
             ("settled_top_d", top / g["d"]), ("bulk_density_kg_m3", rho_b), ("solid_fraction", rho_b / P.RHO_P),
             ("packing_cpu_s", round(pack_cpu, 2)), ("fill_cpu_s", round(cpu, 2)), ("fill_wall_s", round(time.time() - t0))]
@@ -368,19 +351,6 @@ def flow(a, variant, R_d, case):
                 bev=bev, steady=steady, se=se)
 
 
-def beverloo_fit(rows, gap=None):
-    """C and k of Beverloo from several outlets: W^(1/n) = (C rho_b sqrt(g) L)^(1/n) (D - k d) is
-    linear in D (n = 5/2 circular, 3/2 slit of length L = gap). rows: [(R, W [kg/s], rho_b)]."""
-    if len(rows) < 2:
-        return math.nan, math.nan
-    n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
-    D = np.array([2 * r for r, _, _ in rows])
-    y = np.array([w ** (1 / n_exp) for _, w, _ in rows])
-    slope, icpt = np.polyfit(D, y, 1)
-    rho_b = float(np.mean([rb for _, _, rb in rows]))
-    return float(slope ** n_exp / (rho_b * math.sqrt(P.G) * length)), float(-icpt / slope / P.D)
-
-
 def plot_flow(a, variant, results, path):
     plt = gc.plots.pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
@@ -470,8 +440,11 @@ def post(a, wanted):
         plot_flow(a, var, results, os.path.join(a.out, "flow_rate.png" if var == "silo" else "flow_rate_slab.png"))
         g = geometry(a.size, var)
         gap = 2 * g["half_gap"] if var == "slab" else None
-        C, k = beverloo_fit([(R_d * P.D, r["steady"] * P.MASS, r["summary"]["bulk_density_kg_m3"])
-                             for R_d, r in sorted(results.items())], gap)
+        n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
+        C, k = gc.outlet.beverloo_fit([2 * R_d * P.D for R_d in sorted(results)],
+                                      [results[R_d]["steady"] * P.MASS for R_d in sorted(results)],
+                                      float(np.mean([r["summary"]["bulk_density_kg_m3"] for _, r in sorted(results.items())])),
+                                      P.D, n_exp, length, P.G)
         for R_d, r in sorted(results.items()):
             s = r["summary"]
             bev_rows.append(dict(variant=var, R_over_d=R_d, rate_per_td=s["steady_rate_per_td"],

@@ -43,12 +43,7 @@ def pending(run, k):
     if not os.path.exists(path):
         raise gc.CaseError(f"{path}: missing (did chunk {k} finish? runs set up before the pending deletions "
                            f"must be run again)")
-    with open(path) as fh:
-        lines = fh.read().split("ITEM: ATOMS")
-    if len(lines) != 2:
-        raise gc.CaseError(f"{path}: not a LIGGGHTS dump (expected one 'ITEM: ATOMS' section)")
-    rows = [ln.split() for ln in lines[1].splitlines()[1:] if ln.strip()]
-    return [int(r[0]) for r in rows]
+    return [int(i) for i in gc.dem.read_dump(path)["id"]]
 
 
 def lost_warnings(run, k):
@@ -69,11 +64,7 @@ def fill_count(fill):
 def events(run, stem, with_x=False):
     """(id, t, d) of every particle massflow/mesh wrote to dem/<stem>_<k>.txt
     (and x, where it crossed, with_x)."""
-    rows = []
-    for p in sorted(glob.glob(os.path.join(run, "dem", f"{stem}_*.txt"))):
-        with open(p) as fh:
-            rows += [line.split()[:4] for line in fh if line.strip() and not line.startswith("#")]
-    a = np.array(rows, dtype=float).reshape(-1, 4)
+    a = gc.outlet.read_records(sorted(glob.glob(os.path.join(run, "dem", f"{stem}_*.txt"))), 4)
     out = (a[:, 0].astype(int), a[:, 1], a[:, 2])
     return out + (a[:, 3],) if with_x else out
 
@@ -109,14 +100,10 @@ def accounting(v, run, fill):
 # --- flow rate -------------------------------------------------------------------
 def window_rates(t, m, t0, t_end):
     """Mass flow [kg/s] in each whole 200 ms window from t0."""
-    n = int((t_end - t0) / P.WINDOW + 1e-9)
-    return np.array([m[(t >= t0 + k * P.WINDOW) & (t < t0 + (k + 1) * P.WINDOW)].sum() / P.WINDOW
-                     for k in range(n)])
+    return gc.outlet.window_rates(t, m, t0, t_end, P.WINDOW)
 
 
-def mean_sd(rates):
-    return (float(rates.mean()) if rates.size else math.nan,
-            float(rates.std(ddof=1)) if rates.size > 1 else math.nan)
+mean_sd = gc.outlet.mean_sd
 
 
 def flow(v, L, run, t_end):
@@ -138,23 +125,24 @@ def flow(v, L, run, t_end):
 
 
 # --- CG fields -------------------------------------------------------------------
-def cg_command(v, run, stem, lo, hi, last_only=False):
+def cg_run(v, run, stem, lo, hi, log, last_only=False):
+    """granairCG over the run's CG dumps (post/cg/) into <run>/cg/<stem>.csv on the window
+    lo..hi (XZ, Gaussian w = d), the four walls as planes; last_only: the last snapshot.
+    Returns (CPU seconds, the snapshots' steps)."""
     dumps = os.path.join(run, "post", "cg")
     steps = sorted(int(re.search(r"_(\d+)\.dump$", p).group(1)) for p in glob.glob(os.path.join(dumps, "particles_*.dump")))
     if not steps:
         raise gc.CaseError(f"{dumps}: no CG snapshots (particles_*.dump)")
-    cmd = ["granairCG", "--particles", os.path.join(dumps, "particles_*.dump"),
-           "--pairs", os.path.join(dumps, "pairs_*.dump"), "--walls", os.path.join(dumps, "walls_*.dump"),
-           "--plane-wall", "wxlo", "x", repr(v["XLO"]), "--plane-wall", "wxhi", "x", repr(v["XHI"]),
-           "--plane-wall", "wfront", "y", "0", "--plane-wall", "wback", "y", repr(v["DEPTH"]),
-           "--dt", repr(v["DEM_DT"]), "--coordinates", "XZ", "--kernel", "gauss",
-           "--width", repr(P.CG_WIDTH_OVER_D * P.D_MEAN), "--cutoff", repr(P.CG_CUTOFF),
-           "--spacing", repr(P.CG_GRID), "--min", *map(repr, lo), "--max", *map(repr, hi),
-           "--threads", "1", "--out", stem, "--format", "csv"]
+    opts = [("particles", "post/cg/particles_*.dump"), ("pairs", "post/cg/pairs_*.dump"),
+            ("walls", "post/cg/walls_*.dump"), ("plane-wall", ["wxlo", "x", v["XLO"]]),
+            ("plane-wall", ["wxhi", "x", v["XHI"]]), ("plane-wall", ["wfront", "y", 0]),
+            ("plane-wall", ["wback", "y", v["DEPTH"]]), ("dt", v["DEM_DT"]), ("coordinates", "XZ"),
+            ("kernel", "gauss"), ("width", P.CG_WIDTH_OVER_D * P.D_MEAN), ("cutoff", P.CG_CUTOFF),
+            ("spacing", P.CG_GRID), ("min", list(lo)), ("max", list(hi)), ("threads", 1), ("format", "csv")]
     if last_only:
         t = steps[-1] * v["DEM_DT"]
-        cmd += ["--from", repr(t * (1 - 1e-9)), "--to", repr(t * (1 + 1e-9))]
-    return cmd, steps
+        opts += [("from", t * (1 - 1e-9)), ("to", t * (1 + 1e-9))]
+    return gc.cg.run(run, os.path.join("cg", stem), opts, log), steps
 
 
 def cg_fields(v, L, run):
@@ -163,8 +151,7 @@ def cg_fields(v, L, run):
     out = os.path.join(run, "cg")
     os.makedirs(out, exist_ok=True)
     lo, hi = (v["XLO"], 0.0, -0.01), (v["XHI"], v["DEPTH"], P.R1_HEIGHT + 0.01)
-    cmd, steps = cg_command(v, run, os.path.join(out, "fields"), lo, hi)
-    cpu = gc.runner.run(cmd, run, "granairCG")
+    cpu, steps = cg_run(v, run, "fields", lo, hi, "granairCG")
     f = gc.series.read_csv(os.path.join(out, "fields.csv"))
     x, z = f["x"], f["z"]
     g, p, i_num, phi = f["shear_rate"], f["pressure"], f["inertial_number"], f["volume_fraction"]
@@ -191,12 +178,8 @@ def cg_fields(v, L, run):
     # the mass check: one snapshot on a grid that holds every kernel
     m = 3 * P.CG_CUTOFF * P.CG_WIDTH_OVER_D * P.D_MEAN
     lo_m, hi_m = (v["XLO"] - m, 0.0, P.SINK_Z - m), (v["XHI"] + m, v["DEPTH"], v["ZHI"] + m)
-    cmd_m, _ = cg_command(v, run, os.path.join(out, "mass"), lo_m, hi_m, last_only=True)
-    cpu += gc.runner.run(cmd_m, run, "granairCG_mass")
-    fm = gc.series.read_csv(os.path.join(out, "mass.csv"))
-    # the grid's own spacing (n points over the window: close to, not exactly, CG_GRID)
-    hx, hz = (float(np.diff(np.unique(fm[k])).mean()) for k in ("x", "z"))
-    cg_mass = float(fm["density"].sum() * hx * hz * v["DEPTH"])
+    cpu += cg_run(v, run, "mass", lo_m, hi_m, "granairCG_mass", last_only=True)[0]
+    cg_mass, _ = gc.cg_grids.mass(gc.cg.read(os.path.join(out, "mass.csv")), depth=v["DEPTH"])
     snap = gc.dem.read_dump(os.path.join(run, "post", "cg", f"particles_{steps[-1]}.dump"))
     dump_mass = float(snap["mass"][(snap["y"] >= 0) & (snap["y"] <= v["DEPTH"])].sum())
     return dict(snapshots=len(steps), t_from=steps[0] * v["DEM_DT"], t_to=steps[-1] * v["DEM_DT"], r2=r2,
@@ -233,13 +216,10 @@ def run(v, L, run_dir, fill, out):
 
 # --- the study -------------------------------------------------------------------
 def bulk_density(fill, v):
-    """Bulk density of the settled fill [kg/m3]: the particles' mass between 2 d
-    above the floor and 2 d below the 200 highest particles."""
+    """Bulk density of the settled fill [kg/m3] between 2 d above the floor and 2 d
+    below the 200 highest particles, and that top."""
     dump = gc.dem.read_dump(os.path.join(fill, "dem", "fill.dump"))
-    top = float(np.mean(np.sort(dump["z"])[::-1][:200]))
-    z0, z1 = 2 * P.D_MEAN, top - 2 * P.D_MEAN
-    sel = (dump["z"] > z0) & (dump["z"] < z1)
-    return float(dump["mass"][sel].sum() / (v["WIDTH"] * v["DEPTH"] * (z1 - z0))), top
+    return gc.outlet.bulk_density(dump["z"], dump["mass"], v["WIDTH"] * v["DEPTH"], P.D_MEAN)
 
 
 def hagen_beverloo(b, rho_b):
@@ -256,26 +236,9 @@ def load(out, f, L):
 
 
 def fit_phi_I(pts):
-    """phi = a1 / (1 + a2 I), least squares in phi (not in 1/phi, which the
-    loose points near the openings would dominate): for a given a2 the best
-    a1 is linear, a2 by a golden-section search over [0, 50]."""
-    if len(pts) < 3:
-        return math.nan, math.nan
-    i, phi = np.asarray(pts).T
-
-    def best(a2):
-        u = 1 / (1 + a2 * i)
-        a1 = float(np.dot(phi, u) / np.dot(u, u))
-        return float(np.sum((phi - a1 * u) ** 2)), a1
-    lo, hi, g = 0.0, 50.0, (math.sqrt(5) - 1) / 2
-    for _ in range(80):
-        m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
-        if best(m1)[0] < best(m2)[0]:
-            hi = m2
-        else:
-            lo = m1
-    a2 = 0.5 * (lo + hi)
-    return best(a2)[1], a2
+    """phi = a1 / (1 + a2 I) over [(I, phi)] (gc.fits.phi_of_I)."""
+    i, phi = np.asarray(pts).reshape(-1, 2).T
+    return gc.fits.phi_of_I(i, phi)
 
 
 def study(a, runs, geoms, c):
@@ -471,36 +434,21 @@ MAPS = (("speed", "|v| [m/s]", "viridis"), ("shear_rate", "shear rate [1/s]", "m
 
 
 def plot_maps(a, f, Ls):
-    Ls = [L for L in Ls if os.path.exists(os.path.join(a.out, f, f"{silo.geometry_name(L)}_cg.csv"))]
-    if not Ls:
-        return
-    plt = gc.plots.pyplot()
-    fig, axs = plt.subplots(len(Ls), 4, figsize=(16, 1.9 * len(Ls) + 0.6), squeeze=False)
-    lim = {}
-    data = {}
+    rows = []
     for L in Ls:
-        d = gc.series.read_csv(os.path.join(a.out, f, f"{silo.geometry_name(L)}_cg.csv"))
+        path = os.path.join(a.out, f, f"{silo.geometry_name(L)}_cg.csv")
+        if not os.path.exists(path):
+            continue
+        d = gc.series.read_csv(path)
         d["speed"] = np.hypot(d["velocity_x"], d["velocity_z"])
-        data[L] = d
-        for k, _, _ in MAPS:
-            lim[k] = max(lim.get(k, 0), float(np.nanpercentile(d[k], 99)))
-    for row, L in zip(axs, Ls):
-        d = data[L]
-        xs, zs = np.unique(d["x"]), np.unique(d["z"])
-        for ax, (k, lab, cmap) in zip(row, MAPS):
-            grid = d[k].reshape(len(zs), len(xs)) if d[k].size == len(xs) * len(zs) else None
-            if grid is None:
-                continue
-            im = ax.pcolormesh(xs * 1e3, zs * 1e3, grid, cmap=cmap, vmin=0, vmax=lim[k] or 1, shading="auto")
+
+        def openings(ax, L=L):
             for (x0, x1) in P.openings(L):
                 ax.plot([x0 * 1e3, x1 * 1e3], [0, 0], color="w", lw=2)
-            ax.set_aspect("equal")
-            ax.set_title(f"{silo.geometry_name(L)}: {lab}", fontsize=8)
-            fig.colorbar(im, ax=ax, shrink=0.8)
-    fig.suptitle(f"CG fields, {f} friction (Gaussian w = d, depth averaged, 20 snapshots); white: the openings; "
-                 "x, z in mm", fontsize=9)
-    fig.tight_layout()
-    gc.plots.save(fig, os.path.join(a.out, f"maps_{f}.png"), dpi=100)
+        rows.append((silo.geometry_name(L), np.unique(d["x"]) * 1e3, np.unique(d["z"]) * 1e3, d, openings))
+    gc.field_maps.draw(os.path.join(a.out, f"maps_{f}.png"),
+                       f"CG fields, {f} friction (Gaussian w = d, depth averaged, 20 snapshots); white: the openings; "
+                       "x, z in mm", rows, MAPS)
 
 
 def levels(a, res, rho_b):

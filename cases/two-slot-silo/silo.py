@@ -80,29 +80,14 @@ def chunks(v):
 
 
 def floor_quads(L, width, depth, piece=0.01):
-    """The floor z = 0 without the openings, in strips of at most `piece` along x
-    (long thin triangles trip LIGGGHTS 3.8's mesh checks)."""
-    xs, solid = [-width / 2], []
-    for (a, b) in P.openings(L):
-        solid.append((xs[-1], a))
-        xs.append(b)
-    solid.append((xs[-1], width / 2))
-    quads = []
-    for (a, b) in solid:
-        n = max(1, math.ceil((b - a) / piece - 1e-9))
-        for k in range(n):
-            x0, x1 = a + (b - a) * k / n, a + (b - a) * (k + 1) / n
-            quads.append([(x0, 0.0, 0.0), (x1, 0.0, 0.0), (x1, depth, 0.0), (x0, depth, 0.0)])
-    return quads
+    """The floor z = 0 without the openings, in strips of at most `piece` along x."""
+    edges = [-width / 2] + [x for ab in P.openings(L) for x in ab] + [width / 2]
+    return gc.stl_walls.strips(0.0, list(zip(edges[::2], edges[1::2])), 0.0, depth, piece)
 
 
 def plane_quads(z, width, depth, margin=0.001, piece=0.01):
     """A horizontal plane at z over the whole silo (the outlet and sink counters)."""
-    x0, x1 = -width / 2 - margin, width / 2 + margin
-    n = math.ceil((x1 - x0) / piece)
-    return [[(x0 + (x1 - x0) * k / n, -margin, z), (x0 + (x1 - x0) * (k + 1) / n, -margin, z),
-             (x0 + (x1 - x0) * (k + 1) / n, depth + margin, z), (x0 + (x1 - x0) * k / n, depth + margin, z)]
-            for k in range(n)]
+    return gc.stl_walls.strips(z, [(-width / 2 - margin, width / 2 + margin)], -margin, depth + margin, piece)
 
 
 def packing(v):

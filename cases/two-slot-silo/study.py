@@ -5,6 +5,9 @@
     study.py [--size test|demo|study] [--friction low high] [--L 0 1 2 4 8 16 32 single]
              [--jobs 2] [--out DIR] [--check] [--setup-only] [--post-only]
 
+OUT defaults to reference-study/ for the study size (the committed results: a
+resumed study adds its runs there) and to run/<size>/ for test and demo.
+
 Per friction set one fill (OUT/runs/<set>/fill: poured into the closed silo
 and settled), then per geometry a discharge (OUT/runs/<set>/<geom>) in
 restart chunks, the last of them writing the 20 CG snapshots. A stopped
@@ -40,16 +43,16 @@ def geometries(names):
 
 
 def main():
-    ap = gc.cli.parser(__doc__, out_help="outputs (default: run/<size> beside this script; the study "
-                                         "reference is reference-study/)")
+    ap = gc.cli.parser(__doc__, out_help="outputs (default: reference-study/ beside this script for the study "
+                                         "size, the committed results a resumed study continues; run/<size> else)")
     ap.add_argument("--size", choices=sorted(P.SIZES), default="demo")
     ap.add_argument("--friction", nargs="+", choices=sorted(P.FRICTION), default=None,
-                    help="friction sets (default: the size's; demo and study both)")
+                    help="friction sets (default: the size's; demo low, study both)")
     ap.add_argument("--L", nargs="+", default=None,
                     help="separations [mm] and/or 'single' (default: the size's; study all eight)")
     ap.add_argument("--jobs", type=int, default=2, help="LIGGGHTS runs at a time (default 2)")
     ap.add_argument("--post-only", action="store_true", help="post-process the finished runs, run nothing")
-    a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "run", a.size))
+    a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "reference-study" if a.size == "study" else os.path.join("run", a.size)))
     if a.np != 1:
         ap.error("--np: the runs are one rank each (use --jobs for two at a time)")
     a.friction = a.friction or P.SIZES[a.size]["friction"]

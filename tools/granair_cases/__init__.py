@@ -17,6 +17,11 @@
     calibration the DEM-calibrated mu(I) of a case material in place of a literature block
     cg          CG fields: granairCG run on a case's dumps, its CSV read back as grids, tensor invariants
     numerics    a root by bisection, a minimum by golden section
+    cg_grids    2-D CG fields (RZ, XZ) on their grid: the committed CSV, the density's integral (mass check)
+    outlet      particles leaving through an outlet: counter records, window rates, bulk density, Beverloo fit
+    fits        least-squares fits the studies share: phi(I) = a1 / (1 + a2 I), y = alpha f
+    stl_walls   flat STL walls in pieces: strips between openings, tiled planes
+    field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -29,3 +34,4 @@ class CaseError(Exception):
 
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
+from . import cg_grids, outlet, fits, stl_walls, field_maps  # noqa: E402,F401
