@@ -25,30 +25,41 @@ RHEOLOGY = """            rheology
                 rhoP        {rho_p:.8g};
                 phiMax      {phi_max:.6g};
                 phiMin      {phi_min:.6g};
-                etaMax      1e5;
+                etaMax      {eta_max:.6g};
             }}"""
 
 # --- 1 and 2: packed bed under upflow (Ergun) and the onset of fluidisation
 # glass beads 0.5 mm, as cases/fluidised-bed (the DEM-CFD check of the same).
-BED = dict(D=0.5e-3, RHO_P=2500.0, H=0.10, NZ=100, BED_H=0.05, ALPHA0=0.57,
-           ALPHA_MAX=0.62, ALPHA_MIN_FRICTION=0.55, FR=0.05, FR_ETA=2, FR_P=5,
-           DRAG_LAW="ErgunGidaspow", DT=2e-4, MAX_CO=0.2, N_OUTER=3, FACE_MOMENTUM="no")
-BED_FRICTION = dict(mu_s=0.38, mu_2=0.64, i0=0.279, phi_max=0.62, phi_min=0.55)
-ERGUN_FRACTIONS = (0.3, 0.6)          # U_s / U_mf,WY of the Ergun runs
-ERGUN_T_END = 0.5                     # [s]: the bed settles in ~0.1 s, then steady
+# Loose packing 0.60 (eps 0.40, glass beads at minimum fluidisation), alphaMax
+# 0.64: as U -> U_mf the contact pressure vanishes and the bed loosens to the
+# loose packing, so the model's U_mf is Ergun's at eps = 0.40 (0.213 m/s,
+# +13 % on Wen & Yu; with 0.59 it was +27 %, measured). The bed starts just
+# above the loose packing (contact pressure ~3 Pa) and compacts under its
+# weight (a denser start springs back and throws its top layer up).
+BED = dict(D=0.5e-3, RHO_P=2500.0, H=0.10, NZ=50, BED_H=0.05, ALPHA0=0.602,
+           ALPHA_MAX=0.64, ALPHA_MIN_FRICTION=0.60, FR=0.05, FR_ETA=2, FR_P=5,
+           DRAG_LAW="ErgunGidaspow", DT=4e-4, MAX_CO=0.2, N_OUTER=3, FACE_MOMENTUM="no")
+# etaMax 100 Pa s (the silo cases use 1e5): in a 1-D column the packing can only
+# settle by uniaxial creep at ~p/etaMax, so with 1e5 the bed was still
+# compacting at 2 mm/s after 0.1 s and the air it displaced added 3 % to the
+# Ergun pressure drop; the rheology is not what these columns test.
+BED_FRICTION = dict(mu_s=0.38, mu_2=0.64, i0=0.279, phi_max=0.64, phi_min=0.60, eta_max=100.0)
+ERGUN_FRACTIONS = (0.4, 0.8)          # U_s / U_mf,WY of the Ergun runs
+ERGUN_T_END = 0.3                     # [s]: the bed settles in ~0.1 s, then steady
 TOL_ERGUN = 0.02                      # the issue's 2 %
-FLUID_FRACTIONS = (0.3, 0.5, 0.7, 1.3, 1.6, 2.0)   # U_s / U_mf,WY of the sweep
-FLUID_T_END = 1.0
+FLUID_FRACTIONS = (1.5, 2.0)         # U_s / U_mf,WY of the fluidised runs
+FLUID_T_END = 0.6
+FLUID_WINDOW = 0.2                    # [s] the fluidised dp is the time mean from here to the end
 TOL_UMF = 0.15                        # the issue's 15 % against Wen & Yu (1966)
 TOL_PLATEAU = 0.02                    # fluidised dp vs the buoyant weight per area
 
 # --- 3: hindered settling (Richardson & Zaki 1954), Re_t < 0.2 so n = 4.65
-SETTLE = dict(D=30e-6, RHO_P=2500.0, H=0.10, NZ=200, BED_H=0.08,
+SETTLE = dict(D=30e-6, RHO_P=2500.0, H=0.10, NZ=100, BED_H=0.08,
               ALPHA_MAX=0.62, ALPHA_MIN_FRICTION=0.55, FR=0.05, FR_ETA=2, FR_P=5,
-              DRAG_LAW="ErgunGidaspow", DT=1e-4, MAX_CO=0.2, N_OUTER=3, FACE_MOMENTUM="no",
-              T_END=0.8, U_S=0.0)
+              DRAG_LAW="ErgunGidaspow", DT=2e-4, MAX_CO=0.2, N_OUTER=3, FACE_MOMENTUM="no",
+              T_END=0.4, U_S=0.0)
 SETTLE_ALPHAS = (0.05, 0.15)
-SETTLE_WINDOW = (0.1, 0.6)            # [s] interface tracked (after the start-up, before the sediment)
+SETTLE_WINDOW = (0.1, 0.4)            # [s] interface tracked (after the start-up, before the sediment)
 TOL_RZ = 0.05                         # the issue's 5 %
 
 # --- 4: consolidation of a loose column (Terzaghi 1943), linear contact law
@@ -61,7 +72,7 @@ CONSOL = dict(D=30e-6, RHO_P=2500.0, H=0.06, NZ=120, BED_H=0.05, ALPHA0=0.55,
               ALPHA_MAX=0.64, ALPHA_MIN_FRICTION=0.55, FR=4e5, FR_ETA=1, FR_P=0,
               DRAG_LAW="ErgunGidaspow", DT=2e-5, MAX_CO=0.2, N_OUTER=3, FACE_MOMENTUM="no",
               U_S=0.0)
-CONSOL_FRICTION = dict(mu_s=1e-4, mu_2=2e-4, i0=0.279, phi_max=0.64, phi_min=0.55)
+CONSOL_FRICTION = dict(mu_s=1e-4, mu_2=2e-4, i0=0.279, phi_max=0.64, phi_min=0.55, eta_max=1e5)
 CONSOL_TV = (0.05, 0.1, 0.2, 0.4, 0.8)   # time factors T_v = c_v t / H^2 compared
 TOL_TERZAGHI = 0.05                      # of the initial excess pressure at the base
 

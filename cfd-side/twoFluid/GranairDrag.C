@@ -26,8 +26,15 @@ Foam::dragModels::granairDrag::granairDrag
     const bool registerObject
 )
 :
-    dragModel(dict, pair, registerObject)
+    dragModel(dict, pair, registerObject),
+    diameter_(dict.getOrDefault<scalar>("diameter", -1))
 {
+    if (dict.found("diameter") && !(diameter_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "drag " << pair.name() << ": diameter " << diameter_
+            << " m: expected a particle diameter > 0 (or no entry: the phase's d)" << exit(FatalIOError);
+    }
     const ::granair::Dictionary law = granairTwoFluid::toGranair(dict, "law");
     try
     {
@@ -76,6 +83,7 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::granairDrag::K() const
     const auto eval = [&](scalar alphaD, scalar di, scalar slip, scalar rho, scalar mu)
     {
         const scalar eps = 1.0 - min(max(alphaD, residual), 1.0 - SMALL);
+        if (diameter_ > 0) di = diameter_;
         ::granair::FluidProperties fluid;
         fluid.rho = rho;
         fluid.mu = mu;

@@ -7,6 +7,7 @@
 #include "core/Error.hpp"
 #include "addToRunTimeSelectionTable.H"
 #include "fvcGrad.H"
+#include "calculatedFvPatchFields.H"
 
 namespace Foam
 {
@@ -281,7 +282,43 @@ Foam::tmp<Foam::volScalarField> muI::nu
         FatalErrorInFunction << "frictionalStressModel muI: " << e.what() << exit(FatalError);
     }
     nuf.correctBoundaryConditions();
+    publish(phase, pf, nuf);
     return tnu;
+}
+
+
+void muI::publish(const phaseModel& phase, const volScalarField& pfOverRho, const volScalarField& nuf) const
+{
+    const scalar rhoP = rheology_->parameters().rhoP;
+    const fvMesh& mesh = phase.mesh();
+    const word pName(IOobject::groupName("pf", phase.name()));
+    const word muName(IOobject::groupName("muFriction", phase.name()));
+    for (const word& name : {pName, muName})
+    {
+        if (!mesh.foundObject<volScalarField>(name))
+        {
+            const dimensionSet dims = name == pName ? dimPressure : dimPressure*dimTime;
+            mesh.objectRegistry::store
+            (
+                new volScalarField
+                (
+                    IOobject(name, mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+                    mesh,
+                    dimensionedScalar(dims, Zero),
+                    calculatedFvPatchScalarField::typeName
+                )
+            );
+        }
+    }
+    volScalarField& pfField = mesh.lookupObjectRef<volScalarField>(pName);
+    volScalarField& muField = mesh.lookupObjectRef<volScalarField>(muName);
+    pfField.primitiveFieldRef() = rhoP*pfOverRho.primitiveField();
+    muField.primitiveFieldRef() = rhoP*nuf.primitiveField();
+    forAll(pfField.boundaryField(), patchi)
+    {
+        pfField.boundaryFieldRef()[patchi] == rhoP*pfOverRho.boundaryField()[patchi];
+        muField.boundaryFieldRef()[patchi] == rhoP*nuf.boundaryField()[patchi];
+    }
 }
 
 
