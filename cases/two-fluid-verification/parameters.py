@@ -112,13 +112,14 @@ def consolidation_cv(p=CONSOL):
     return eps ** 3 * p["FR"] * p["D"] ** 2 / (150 * MU * a)
 
 
-def terzaghi_base(tv, terms=200):
-    """Excess pore pressure at the impermeable base over its initial value, for an
-    initial excess growing linearly with depth (self-weight), drained top:
-    p(zeta, 0) = p0 zeta/H, p = sum A_m sin(M zeta/H) exp(-M^2 T_v), M = (2m+1) pi/2,
+def terzaghi(zeta_over_h, tv, terms=300):
+    """Excess pore pressure at depth zeta over the initial excess at the base, for an
+    initial excess growing linearly with depth (self-weight), drained top and
+    impermeable base (Terzaghi 1943): p(zeta, 0) = p0 zeta/H,
+    p = sum A_m sin(M zeta/H) exp(-M^2 T_v), M = (2m+1) pi/2,
     A_m = (2/H) int_0^H p0 (zeta/H) sin(M zeta/H) d zeta = 2 p0 (-1)^m / M^2."""
     s = 0.0
     for m in range(terms):
         M = (2 * m + 1) * math.pi / 2
-        s += 2 * (-1) ** m / M ** 2 * math.sin(M) * math.exp(-M * M * tv)
+        s += 2 * (-1) ** m / M ** 2 * math.sin(M * zeta_over_h) * math.exp(-M * M * tv)
     return s
