@@ -30,6 +30,13 @@ import parameters as P
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TESTS = ("bed", "settling", "consolidation")
+# Bad input: (run, what is changed, text the error must contain). Each stops
+# twoPhaseEulerFoam at start-up; the check is that the message names the file,
+# the key and what was expected.
+BAD_INPUT = [
+    ("bad_drag_law", dict(DRAG_LAW="Ergn"), ["phaseProperties", "Ergn", "ErgunGidaspow", "WenYu"]),
+    ("bad_rheology_rho", dict(RHO_P=2400.0), ["muICoeffs.rheology", "rhoP 2500", "thermophysicalProperties.particles"]),
+]
 
 
 def values(p, **extra):
@@ -259,12 +266,47 @@ def consolidation_analyse(out, c):
     gc.plots.save(fig, os.path.join(out, "consolidation.png"))
 
 
+# --- bad input: the library's errors ----------------------------------------
+
+def bad_input_values(change):
+    v = bed_values(0.1, 0.01)
+    v.update(change)
+    if "RHO_P" in change:   # the phase's density changed, the rheology block kept
+        v["RHEOLOGY"] = P.rheology(P.BED, P.BED_FRICTION)
+    return v
+
+
+def bad_input_run(run):
+    """blockMesh, setFields, then twoPhaseEulerFoam, which must fail: its log's text."""
+    gc.runner.run(["blockMesh"], run, "blockMesh")
+    gc.runner.run(["setFields"], run, "setFields")
+    try:
+        gc.runner.run(["twoPhaseEulerFoam"], run, "twoPhaseEulerFoam")
+    except gc.CaseError:
+        pass
+    else:
+        return dict(cpu_s=0.0, failed=False)
+    with open(os.path.join(run, "log", "twoPhaseEulerFoam.log")) as fh:
+        return dict(cpu_s=0.0, failed=True, log=fh.read())
+
+
+def bad_input_analyse(out, c, results):
+    for name, change, needles in BAD_INPUT:
+        r = results[name]
+        missing = [n for n in needles if n not in r.get("log", "")]
+        c.true(f"{name}: twoPhaseEulerFoam stops with a message naming {', '.join(needles)}",
+               r["failed"] and not missing, "stopped" if r["failed"] else "ran on",
+               "bad input stops with the file, the key and what was expected"
+               + (f"; missing: {', '.join(missing)}" if missing else ""))
+
+
 def main():
     ap = gc.cli.parser(__doc__, out_help="results folder (default results/ beside the study)")
-    ap.add_argument("--test", nargs="+", default=["all"], choices=TESTS + ("all",))
+    ap.add_argument("--test", nargs="+", default=["all"], choices=TESTS + ("all", "bad-input"),
+                    help="all: the three closed-form tests; bad-input: the library's start-up errors")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (default 2)")
     a = gc.cli.parse(ap, os.path.join(HERE, "results"))
-    tests = TESTS if "all" in a.test else tuple(a.test)
+    tests = TESTS if "all" in a.test else tuple(t for t in a.test if t in TESTS)
     runs = []
     if "bed" in tests:
         for name, u_s, packed in bed_runs():
@@ -273,12 +315,19 @@ def main():
         runs += [(f"settling_a{al:.2f}", settling_values(al)) for al in P.SETTLE_ALPHAS]
     if "consolidation" in tests:
         runs.append(("consolidation", consolidation_values()))
+    bad = "bad-input" in a.test
+    if bad:
+        runs += [(name, bad_input_values(change)) for name, change, _ in BAD_INPUT]
     dirs = {name: setup(a.out, name, v) for name, v in runs}
     if a.setup_only:
         print("two-fluid-verification: run folders in", os.path.join(a.out, "runs"))
         return 0
-    res = gc.runner.pool([(name, execute, (d,)) for name, d in dirs.items()], a.jobs, "two-fluid-verification")
+    bad_names = {name for name, _, _ in BAD_INPUT} if bad else set()
+    res = gc.runner.pool([(name, bad_input_run if name in bad_names else execute, (d,)) for name, d in dirs.items()],
+                         a.jobs, "two-fluid-verification")
     c = gc.checks.Checks("two-fluid-verification")
+    if bad:
+        bad_input_analyse(a.out, c, res)
     for test in tests:
         globals()[f"{test}_analyse"](a.out, c)
     cpu = sum(r["cpu_s"] for r in res.values())

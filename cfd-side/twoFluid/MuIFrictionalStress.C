@@ -196,6 +196,33 @@ Foam::tmp<Foam::volScalarField> cellwise
 } // namespace
 
 
+Foam::tmp<Foam::volScalarField> muI::pressure
+(
+    const phaseModel& phase,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax,
+    const bool prime
+) const
+{
+    checkPhase(phase);
+    const PressureLaw law = makeLaw(Fr_, eta_, p_, alphaDeltaMin_, shearInduced_, alphaMinFriction, alphaMax, *rheology_);
+    const tmp<volScalarField> tg = shearRate(phase);
+    if (prime)
+    {
+        return cellwise
+        (
+            "muI:pfPrime", phase, tg(), dimPressure,
+            [&law](double a, double g) { return law.contactPrime(a) + law.shearInducedPrime(a, g); }
+        );
+    }
+    return cellwise
+    (
+        "muI:pf", phase, tg(), dimPressure,
+        [&law](double a, double g) { return law.contact(a) + law.shearInduced(a, g); }
+    );
+}
+
+
 Foam::tmp<Foam::volScalarField> muI::frictionalPressure
 (
     const phaseModel& phase,
@@ -203,14 +230,7 @@ Foam::tmp<Foam::volScalarField> muI::frictionalPressure
     const dimensionedScalar& alphaMax
 ) const
 {
-    checkPhase(phase);
-    const PressureLaw law = makeLaw(Fr_, eta_, p_, alphaDeltaMin_, shearInduced_, alphaMinFriction, alphaMax, *rheology_);
-    const tmp<volScalarField> tg = shearRate(phase);
-    return cellwise
-    (
-        "muI:pf", phase, tg(), dimPressure,
-        [&law](double a, double g) { return law.contact(a) + law.shearInduced(a, g); }
-    );
+    return pressure(phase, alphaMinFriction, alphaMax, false);
 }
 
 
@@ -221,13 +241,7 @@ Foam::tmp<Foam::volScalarField> muI::frictionalPressurePrime
     const dimensionedScalar& alphaMax
 ) const
 {
-    const PressureLaw law = makeLaw(Fr_, eta_, p_, alphaDeltaMin_, shearInduced_, alphaMinFriction, alphaMax, *rheology_);
-    const tmp<volScalarField> tg = shearRate(phase);
-    return cellwise
-    (
-        "muI:pfPrime", phase, tg(), dimPressure,
-        [&law](double a, double g) { return law.contactPrime(a) + law.shearInducedPrime(a, g); }
-    );
+    return pressure(phase, alphaMinFriction, alphaMax, true);
 }
 
 
