@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "GranairDictionary.H"
 
+#include <cstdlib>
 #include <sstream>
 
 #include "OStringStream.H"
