@@ -3,9 +3,9 @@
 granair's muI frictional stress, granair drag (ErgunGidaspow on the lactose's
 225 um grains) and Coulomb walls (libgranairTwoFluid.so, docs/two-fluid-model.md).
 
-Status: runs start and discharge, but no run has reached the DEM's steady
-window yet (docs/two-fluid-model.md, "On a silo"): the numbers it prints are
-not a cross-validation until a run covers 0.3 s and beyond.
+Status: b = 10 mm with and without air run (reference-two-fluid/,
+docs/two-fluid-model.md "On a silo"); the disagreement with DEM-CFD is
+stated there. Not yet a study: one coarse mesh, one slot width.
 
     twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--mesh N] [--out DIR] [--setup-only]
 
