@@ -8,7 +8,7 @@ import json
 
 from . import CaseError
 
-LEVELS = ["closed-form", "continuum", "cg-dem", "cg-dem-cfd", "dem-cfd"]
+LEVELS = ["closed-form", "continuum", "two-fluid", "cg-dem", "cg-dem-cfd", "dem-cfd"]
 KEYS = ("case", "level", "model", "b_mm", "air", "steady_mass_flow_kg_s",
         "steady_window_s", "outlet_dpdz_Pa_m", "wall_time_s", "cores", "timeseries")
 
