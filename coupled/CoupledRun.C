@@ -396,18 +396,23 @@ void CoupledRun::forcesToDem()
         // The air's own pressure gradient (Gauss on its face pressure): at a
         // bed edge fvc::grad(p) with linearly interpolated face values gives
         // the edge cell about half the gradient its particles carry.
+        // Each force goes straight to its DEM slot or into the message to
+        // its DEM owner (no array of owned forces in between).
         const volVectorField& gradP = air_->gradP();
-        step_->cellsToParticles
+        const ::granair::CouplingStep::Forces force = step_->forces
         (
             owned_,
             reinterpret_cast<const double*>(air_->U().primitiveField().cdata()),
-            reinterpret_cast<const double*>(gradP.primitiveField().cdata()),
-            ownedForces_
+            reinterpret_cast<const double*>(gradP.primitiveField().cdata())
+        );
+        exchange_->backwardFill
+        (
+            3, [&force](std::size_t k, double* f) { force(k, f); }, demForces_
         );
     }
     {
         StageTimers::Scope s(timers_, StageTimers::Exchange);
-        exchange_->backward(ownedForces_, 3, demForces_);
+        exchange_->backwardSend();
     }
     StageTimers::Scope s(timers_, StageTimers::DEM);
     dem_->setFluidForces(demForces_.data(), particles_.size());
@@ -676,8 +681,7 @@ std::string CoupledRun::progressExtra(const ::granair::StepRecord& r) const
     ::granair::ResourceUsage::Buffers b;
     b.run = double
     (
-        capacityBytes(particles_) + owned_.bufferBytes() + capacityBytes(ownedForces_)
-      + capacityBytes(demForces_)
+        capacityBytes(particles_) + owned_.bufferBytes() + capacityBytes(demForces_)
     );
     b.exchange = double(exchange_->bufferBytes());
     b.stepParticles = double(step_->particleBufferBytes());

@@ -18,13 +18,11 @@ std::int32_t TagCellHints::key(std::int64_t id) {
 
 void TagCellHints::beginStep(std::vector<int>& cells) {
     std::swap(lastCells_, cells);
-    std::swap(lastIds_, ids_);
-    // A forward() that failed part-way noted fewer tags than it found cells,
-    // or the other way round: keep the aligned part only.
+    // A forward() that stopped part-way left tags and cells of different
+    // lengths: keep the aligned part only.
     const std::size_t n = std::min(lastIds_.size(), lastCells_.size());
     lastIds_.resize(n);
     lastCells_.resize(n);
-    ids_.clear();
     sorted_ = false;
     sortedLookups_ = 0;
 }
@@ -48,13 +46,8 @@ int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
     return lastCells_[*it];
 }
 
-void TagCellHints::note(std::size_t j, std::int64_t id) {
-    if (ids_.size() <= j) ids_.resize(j + 1, -1);
-    ids_[j] = key(id);
-}
-
 std::size_t TagCellHints::bufferBytes() const {
-    return capacityBytes(ids_) + capacityBytes(lastIds_) + capacityBytes(lastCells_) + capacityBytes(byId_);
+    return capacityBytes(lastIds_) + capacityBytes(lastCells_) + capacityBytes(byId_);
 }
 
 }  // namespace granair

@@ -10,9 +10,9 @@
 // tried. Here the position is checked against the tag (no re-sort since: the
 // same tag at the same position, one compare) and, where it differs, the tag
 // is looked up in the last step's tags, sorted once per forward() on the first
-// mismatch (binary search). Cost: 16 bytes per own particle (this step's and
-// the last step's tags, the sorted index, the last cells; tags are LIGGGHTS
-// 3.8's int).
+// mismatch (binary search). Cost: 12 bytes per own particle (the last step's
+// tags and cells, the sorted index, built only after a re-sort; tags are
+// LIGGGHTS 3.8's int); the cells found this step are the caller's.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -31,8 +31,15 @@ public:
     // list, was found in at the last step; -1 if it was not there.
     int lastCell(std::size_t j, std::int64_t id);
 
-    // Tag of the particle at position j of this step (call for j = 0, 1, ...).
-    void note(std::size_t j, std::int64_t id);
+    // End a forward(): this step's tags, tagOf(j) for j = 0 .. n-1, replace
+    // the last step's (after every lastCell() call of the step: the lookups
+    // read the old ones in place, so no second tag list is kept).
+    template <class TagOf>
+    void endStep(std::size_t n, const TagOf& tagOf) {
+        lastIds_.resize(n);
+        for (std::size_t j = 0; j < n; ++j) lastIds_[j] = key(tagOf(j));
+        sorted_ = false;
+    }
 
     // Particles of the last step found at another position (a re-sort),
     // since the last beginStep().
@@ -42,7 +49,7 @@ public:
 
 private:
     static std::int32_t key(std::int64_t id);
-    std::vector<std::int32_t> ids_, lastIds_;
+    std::vector<std::int32_t> lastIds_;
     std::vector<int> lastCells_;
     std::vector<std::int32_t> byId_;  // positions in lastIds_, ascending tag
     bool sorted_ = false;

@@ -52,7 +52,7 @@ TEST_CASE("TagCellHints: by position while the order holds, by tag after a re-so
     std::vector<int> cells;
     h.beginStep(cells);
     cells.assign({10, 11, 12, 13});
-    for (std::size_t j = 0; j < 4; ++j) h.note(j, 100 + static_cast<std::int64_t>(j));
+    h.endStep(4, [](std::size_t j) { return 100 + static_cast<std::int64_t>(j); });
     h.beginStep(cells);  // the cells above become the hints
     CHECK(h.lastCell(0, 100) == 10);
     CHECK(h.lastCell(3, 103) == 13);
