@@ -685,7 +685,7 @@ std::string CoupledRun::progressExtra(const ::granair::StepRecord& r) const
     );
     b.exchange = double(exchange_->bufferBytes());
     b.stepParticles = double(step_->particleBufferBytes());
-    b.stepCells = double(step_->cellBufferBytes());
+    b.stepCells = double(step_->cellBufferBytes() + locator_->cellArrayBytes());
     b.cells = double(mesh_.nCells());
     return b;
 }

@@ -92,5 +92,37 @@ void FoamCellLocator::cellNeighbours(int cell, std::vector<int>& out) const
     return bounds_;
 }
 
+const ::granair::CellArrays& FoamCellLocator::cellArrays() const
+{
+    static_assert(sizeof(vector) == 3*sizeof(double), "cell centres are read as 3 doubles each");
+    if (!arrays_.neighbourStart)
+    {
+        const labelListList& cc = mesh_.cellCells();
+        neighbourStart_.assign(1, 0);
+        neighbourStart_.reserve(std::size_t(mesh_.nCells()) + 1);
+        std::size_t n = 0;
+        for (const labelList& nb : cc)
+        {
+            n += std::size_t(nb.size());
+        }
+        neighbours_.reserve(n);
+        for (const labelList& nb : cc)
+        {
+            neighbours_.insert(neighbours_.end(), nb.begin(), nb.end());
+            neighbourStart_.push_back(int(neighbours_.size()));
+        }
+        arrays_.centres = reinterpret_cast<const double*>(mesh_.C().primitiveField().cdata());
+        arrays_.volumes = mesh_.V().cdata();
+        arrays_.neighbours = neighbours_.data();
+        arrays_.neighbourStart = neighbourStart_.data();
+    }
+    return arrays_;
+}
+
+std::size_t FoamCellLocator::cellArrayBytes() const
+{
+    return (neighbourStart_.capacity() + neighbours_.capacity())*sizeof(int);
+}
+
 } // namespace granair
 } // namespace Foam
