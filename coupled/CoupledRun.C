@@ -365,6 +365,7 @@ void CoupledRun::countSearch()
     search_[1] += st.reordered;
     search_[2] += st.hintMisses;
     search_[3] += st.globalSearches;
+    search_[4] += st.tagSearches;
 }
 
 
@@ -709,11 +710,12 @@ void CoupledRun::finish()
     }
     {
         // How well the exchange's cell-search hints work (ParticleExchange.hpp).
-        std::int64_t total[4];
-        MPI_Allreduce(search_, total, 4, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+        std::int64_t total[5];
+        MPI_Allreduce(search_, total, 5, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
         const double n = total[0] > 0 ? double(total[0]) : 1.0;
         os  << "Cell search: " << total[0] << " particle records; re-sorted since the last step "
-            << 100*total[1]/n << " %, not in their last cell or its neighbours " << 100*total[2]/n
+            << 100*total[1]/n << " % (found by tag search " << 100*total[4]/n
+            << " %), not in their last cell or its neighbours " << 100*total[2]/n
             << " %, whole-mesh searches " << 100*total[3]/n << " %\n";
     }
     timers_.report(MPI_COMM_WORLD, os);

@@ -282,6 +282,7 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<P
                            "'s CFD box but in none of its cells)");
     }
     stats.reordered = selfHints.sortedLookups();
+    stats.tagSearches = selfHints.tagSearches();
     selfHints.endStep(selfDem.size(), [&](std::size_t j) { return dem[selfDem[j]].id; });
     nInbound = static_cast<int>(inbox.messages.size());
     if (static_cast<int>(inbound.size()) < nInbound) inbound.resize(nInbound);

@@ -118,6 +118,7 @@ struct ExchangeStats {
     // records).
     std::int64_t hintMisses = 0;
     std::int64_t reordered = 0;
+    std::int64_t tagSearches = 0;  // of the reordered: found by binary search (TagCellHints)
     std::int64_t globalSearches = 0;
 };
 
