@@ -40,6 +40,19 @@ OwnedParticles lattice(const BoxMesh& mesh, int perAxis, const Vec3& lo, const V
     return out;
 }
 
+// n particles of one radius at random places in the 0.02 x 0.02 x 0.04 m
+// box, random velocities up to 0.1 m/s per component.
+OwnedParticles randomParticles(const BoxMesh& mesh, int n, unsigned seed, double radius) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> ux(0.0, 0.02), uz(0.0, 0.04), uv(-0.1, 0.1);
+    OwnedParticles parts;
+    for (int i = 0; i < n; ++i) {
+        const ParticleState p{i + 1, Vec3(ux(rng), ux(rng), uz(rng)), Vec3(uv(rng), uv(rng), uv(rng)), radius};
+        parts.add(p, mesh.findCell(p.x));
+    }
+    return parts;
+}
+
 }  // namespace
 
 TEST_CASE("void fraction is one minus the particle volume per cell", "[coupler]") {
@@ -62,13 +75,7 @@ TEST_CASE("momentum given to the air equals the drag on the particles", "[couple
     for (const std::string vf : {"centre", "divided", "gaussian"}) {
         auto cs = settings("DiFelice", vf);
         CouplingStep step(cs, mesh, FluidProperties{1.2, 1.8e-5});
-        std::mt19937 rng(42);
-        std::uniform_real_distribution<double> ux(0.0, 0.02), uz(0.0, 0.04), uv(-0.1, 0.1);
-        OwnedParticles parts;
-        for (int i = 0; i < 500; ++i) {
-            const ParticleState p{i + 1, Vec3(ux(rng), ux(rng), uz(rng)), Vec3(uv(rng), uv(rng), uv(rng)), 5e-4};
-            parts.add(p, mesh.findCell(p.x));
-        }
+        const OwnedParticles parts = randomParticles(mesh, 500, 42, 5e-4);
         const int n = mesh.nCells();
         std::vector<double> U(3 * n), eps(n), K(n), Us(3 * n), gradP(3 * n, 0.0), f;
         for (int c = 0; c < n; ++c) {
@@ -175,13 +182,7 @@ TEST_CASE("centre: no stored stencils, the same numbers bit for bit", "[coupler]
     REQUIRE(fast.voidFraction->centreCellOnly());
     REQUIRE_FALSE(slow.voidFraction->centreCellOnly());
     CouplingStep a(fast, mesh, FluidProperties{1.2, 1.8e-5}), b(slow, mesh, FluidProperties{1.2, 1.8e-5});
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> ux(0.0, 0.02), uz(0.0, 0.04), uv(-0.1, 0.1);
-    OwnedParticles parts;
-    for (int i = 0; i < 300; ++i) {
-        const ParticleState p{i + 1, Vec3(ux(rng), ux(rng), uz(rng)), Vec3(uv(rng), uv(rng), uv(rng)), 4e-4};
-        parts.add(p, mesh.findCell(p.x));
-    }
+    const OwnedParticles parts = randomParticles(mesh, 300, 7, 4e-4);
     const int n = mesh.nCells();
     std::vector<double> U(3 * n), gradP(3 * n);
     for (int c = 0; c < 3 * n; ++c) {
