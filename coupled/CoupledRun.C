@@ -365,6 +365,7 @@ void CoupledRun::countSearch()
     search_[1] += st.reordered;
     search_[2] += st.hintMisses;
     search_[3] += st.globalSearches;
+    search_[4] += st.tagSearches;
 }
 
 
@@ -396,18 +397,23 @@ void CoupledRun::forcesToDem()
         // The air's own pressure gradient (Gauss on its face pressure): at a
         // bed edge fvc::grad(p) with linearly interpolated face values gives
         // the edge cell about half the gradient its particles carry.
+        // Each force goes straight to its DEM slot or into the message to
+        // its DEM owner (no array of owned forces in between).
         const volVectorField& gradP = air_->gradP();
-        step_->cellsToParticles
+        const ::granair::CouplingStep::Forces force = step_->forces
         (
             owned_,
             reinterpret_cast<const double*>(air_->U().primitiveField().cdata()),
-            reinterpret_cast<const double*>(gradP.primitiveField().cdata()),
-            ownedForces_
+            reinterpret_cast<const double*>(gradP.primitiveField().cdata())
+        );
+        exchange_->backwardFill
+        (
+            3, [&force](std::size_t k, double* f) { force(k, f); }, demForces_
         );
     }
     {
         StageTimers::Scope s(timers_, StageTimers::Exchange);
-        exchange_->backward(ownedForces_, 3, demForces_);
+        exchange_->backwardSend();
     }
     StageTimers::Scope s(timers_, StageTimers::DEM);
     dem_->setFluidForces(demForces_.data(), particles_.size());
@@ -689,12 +695,11 @@ std::string CoupledRun::progressExtra(const ::granair::StepRecord& r) const
     ::granair::ResourceUsage::Buffers b;
     b.run = double
     (
-        capacityBytes(particles_) + owned_.bufferBytes() + capacityBytes(ownedForces_)
-      + capacityBytes(demForces_)
+        capacityBytes(particles_) + owned_.bufferBytes() + capacityBytes(demForces_)
     );
     b.exchange = double(exchange_->bufferBytes());
     b.stepParticles = double(step_->particleBufferBytes());
-    b.stepCells = double(step_->cellBufferBytes());
+    b.stepCells = double(step_->cellBufferBytes() + locator_->cellArrayBytes());
     b.cells = double(mesh_.nCells());
     return b;
 }
@@ -718,11 +723,12 @@ void CoupledRun::finish()
     }
     {
         // How well the exchange's cell-search hints work (ParticleExchange.hpp).
-        std::int64_t total[4];
-        MPI_Allreduce(search_, total, 4, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+        std::int64_t total[5];
+        MPI_Allreduce(search_, total, 5, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
         const double n = total[0] > 0 ? double(total[0]) : 1.0;
         os  << "Cell search: " << total[0] << " particle records; re-sorted since the last step "
-            << 100*total[1]/n << " %, not in their last cell or its neighbours " << 100*total[2]/n
+            << 100*total[1]/n << " % (found by tag search " << 100*total[4]/n
+            << " %), not in their last cell or its neighbours " << 100*total[2]/n
             << " %, whole-mesh searches " << 100*total[3]/n << " %\n";
     }
     timers_.report(MPI_COMM_WORLD, os);

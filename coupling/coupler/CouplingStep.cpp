@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/CapacityBytes.hpp"
 #include "core/Error.hpp"
@@ -18,6 +19,7 @@ static double volume(const ParticleState& p) {
 CouplingStep::CouplingStep(const CouplingSettings& settings, const CellLocator& mesh, FluidProperties fluid)
     : settings_(settings), mesh_(mesh), fluid_(fluid) {
     if (!settings_.voidFraction) fail("CouplingStep: a void-fraction model is required");
+    centreOnly_ = settings_.voidFraction->centreCellOnly();
 }
 
 void CouplingStep::voidFraction(const OwnedParticles& owned, double* eps) {
@@ -25,19 +27,28 @@ void CouplingStep::voidFraction(const OwnedParticles& owned, double* eps) {
     const std::size_t np = owned.size();
 
     // Stencils and solid volume.
-    offset_.assign(1, 0);
-    offset_.reserve(np + 1);
-    weights_.clear();
+    offset_.clear();
+    stencilCell_.clear();
+    stencilWeight_.clear();
     solid_.assign(nCells, 0.0);
-    for (std::size_t p = 0; p < np; ++p) {
-        const ParticleState& ps = owned.state(p);
-        const double vp = volume(ps);
-        settings_.voidFraction->stencil(mesh_, ps, owned.cell(p), scratch_);
-        for (const CellWeight& cw : scratch_) {
-            solid_[cw.cell] += cw.weight * vp;
-            weights_.push_back(cw);
+    if (centreOnly_) {
+        for (std::size_t p = 0; p < np; ++p) solid_[owned.cell(p)] += 1.0 * volume(owned.state(p));
+    } else {
+        reserveAtLeast(offset_, np + 1);
+        offset_.push_back(0);
+        for (std::size_t p = 0; p < np; ++p) {
+            const ParticleState& ps = owned.state(p);
+            const double vp = volume(ps);
+            settings_.voidFraction->stencil(mesh_, ps, owned.cell(p), scratch_);
+            if (stencilCell_.size() + scratch_.size() > std::numeric_limits<std::uint32_t>::max())
+                fail("CouplingStep: more than 2^32 stencil entries on one rank (", np, " particles)");
+            for (const CellWeight& cw : scratch_) {
+                solid_[cw.cell] += cw.weight * vp;
+                stencilCell_.push_back(cw.cell);
+                stencilWeight_.push_back(cw.weight);
+            }
+            offset_.push_back(static_cast<std::uint32_t>(stencilCell_.size()));
         }
-        offset_.push_back(static_cast<std::int64_t>(weights_.size()));
     }
 
     // Void fraction with its floor.
@@ -63,17 +74,17 @@ void CouplingStep::particlesToCells(const OwnedParticles& owned, const double* U
     const double s = settings_.coarseGrainingFactor;
 
     // Drag coefficient per particle, then K and Us per cell.
+    reserveAtLeast(beta_, np);
     beta_.resize(np);
     sumBeta_.assign(nCells, 0.0);
     std::fill(Us, Us + 3 * static_cast<std::size_t>(nCells), 0.0);
     for (std::size_t p = 0; p < np; ++p) {
         Vec3 uf = Vec3::Zero();
         double epsP = 0.0;
-        for (std::int64_t k = offset_[p]; k < offset_[p + 1]; ++k) {
-            const CellWeight& cw = weights_[k];
-            uf += cw.weight * Vec3(Ucell[3 * cw.cell], Ucell[3 * cw.cell + 1], Ucell[3 * cw.cell + 2]);
-            epsP += cw.weight * eps[cw.cell];
-        }
+        forEachWeight(owned, p, [&](int c, double w) {
+            uf += w * Vec3(Ucell[3 * c], Ucell[3 * c + 1], Ucell[3 * c + 2]);
+            epsP += w * eps[c];
+        });
         const ParticleState& ps = owned.state(p);
         const double dParcel = 2.0 * ps.radius;
         double b = 0.0;
@@ -86,12 +97,11 @@ void CouplingStep::particlesToCells(const OwnedParticles& owned, const double* U
             }
         }
         beta_[p] = b;
-        for (std::int64_t k = offset_[p]; k < offset_[p + 1]; ++k) {
-            const CellWeight& cw = weights_[k];
-            const double wb = cw.weight * b;
-            sumBeta_[cw.cell] += wb;
-            for (int a = 0; a < 3; ++a) Us[3 * cw.cell + a] += wb * ps.v[a];
-        }
+        forEachWeight(owned, p, [&](int c, double w) {
+            const double wb = w * b;
+            sumBeta_[c] += wb;
+            for (int a = 0; a < 3; ++a) Us[3 * c + a] += wb * ps.v[a];
+        });
     }
     for (int c = 0; c < nCells; ++c) {
         K[c] = sumBeta_[c] / mesh_.cellVolume(c);
@@ -100,39 +110,46 @@ void CouplingStep::particlesToCells(const OwnedParticles& owned, const double* U
     }
 }
 
-void CouplingStep::cellsToParticles(const OwnedParticles& owned, const double* Ucell,
-                                    const double* gradPcell, std::vector<double>& forces,
-                                    std::vector<double>* drag) const {
-    const std::size_t np = beta_.size();
-    if (owned.size() != np)
-        fail("CouplingStep::cellsToParticles: ", owned.size(), " particles given, ", np,
+CouplingStep::Forces CouplingStep::forces(const OwnedParticles& owned, const double* Ucell,
+                                          const double* gradPcell) const {
+    if (owned.size() != beta_.size())
+        fail("CouplingStep::cellsToParticles: ", owned.size(), " particles given, ", beta_.size(),
              " in the last particlesToCells");
-    forces.assign(3 * np, 0.0);
-    if (drag) drag->assign(3 * np, 0.0);
-    const Vec3 buoyancyPerVolume = -fluid_.rho * settings_.gravity;
-    for (std::size_t p = 0; p < np; ++p) {
-        Vec3 uf = Vec3::Zero(), gp = Vec3::Zero();
-        for (std::int64_t k = offset_[p]; k < offset_[p + 1]; ++k) {
-            const CellWeight& cw = weights_[k];
-            const int c = cw.cell;
-            uf += cw.weight * Vec3(Ucell[3 * c], Ucell[3 * c + 1], Ucell[3 * c + 2]);
-            gp += cw.weight * Vec3(gradPcell[3 * c], gradPcell[3 * c + 1], gradPcell[3 * c + 2]);
-        }
-        const ParticleState& ps = owned.state(p);
-        const double vp = volume(ps);
-        const Vec3 fd = beta_[p] * (uf - ps.v);
-        Vec3 f = fd;
-        if (settings_.pressureGradientForce) f -= vp * gp;
-        if (settings_.buoyancyForce) f += vp * buoyancyPerVolume;
-        for (int a = 0; a < 3; ++a) {
-            forces[3 * p + a] = f[a];
-            if (drag) (*drag)[3 * p + a] = fd[a];
-        }
+    return Forces(*this, owned, Ucell, gradPcell);
+}
+
+void CouplingStep::Forces::operator()(std::size_t p, double* f, double* drag) const {
+    const CouplingStep& st = step_;
+    Vec3 uf = Vec3::Zero(), gp = Vec3::Zero();
+    st.forEachWeight(owned_, p, [&](int c, double w) {
+        uf += w * Vec3(U_[3 * c], U_[3 * c + 1], U_[3 * c + 2]);
+        gp += w * Vec3(gradP_[3 * c], gradP_[3 * c + 1], gradP_[3 * c + 2]);
+    });
+    const ParticleState& ps = owned_.state(p);
+    const double vp = volume(ps);
+    const Vec3 fd = st.beta_[p] * (uf - ps.v);
+    Vec3 force = fd;
+    if (st.settings_.pressureGradientForce) force -= vp * gp;
+    if (st.settings_.buoyancyForce) force += vp * buoyancyPerVolume_;
+    for (int a = 0; a < 3; ++a) {
+        f[a] = force[a];
+        if (drag) drag[a] = fd[a];
     }
 }
 
+void CouplingStep::cellsToParticles(const OwnedParticles& owned, const double* Ucell,
+                                    const double* gradPcell, std::vector<double>& forces,
+                                    std::vector<double>* drag) const {
+    const Forces force = this->forces(owned, Ucell, gradPcell);
+    const std::size_t np = owned.size();
+    forces.assign(3 * np, 0.0);
+    if (drag) drag->assign(3 * np, 0.0);
+    for (std::size_t p = 0; p < np; ++p) force(p, forces.data() + 3 * p, drag ? drag->data() + 3 * p : nullptr);
+}
+
 std::size_t CouplingStep::particleBufferBytes() const {
-    return capacityBytes(offset_) + capacityBytes(weights_) + capacityBytes(beta_) + capacityBytes(scratch_);
+    return capacityBytes(offset_) + capacityBytes(stencilCell_) + capacityBytes(stencilWeight_) +
+           capacityBytes(beta_) + capacityBytes(scratch_);
 }
 
 std::size_t CouplingStep::cellBufferBytes() const { return capacityBytes(solid_) + capacityBytes(sumBeta_); }

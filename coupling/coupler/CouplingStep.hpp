@@ -60,6 +60,28 @@ public:
                           const double* gradPcell, std::vector<double>& forces,
                           std::vector<double>* drag = nullptr) const;
 
+    // Step 3 one particle at a time, for a caller that puts each force
+    // straight where it goes (ParticleExchange::backwardFill: no array of
+    // owned forces in between). forces(...)(p, f) writes the force on owned
+    // particle p to f[0..2], exactly as cellsToParticles does.
+    class Forces {
+    public:
+        void operator()(std::size_t p, double* f, double* drag = nullptr) const;
+
+    private:
+        friend class CouplingStep;
+        Forces(const CouplingStep& step, const OwnedParticles& owned, const double* Ucell, const double* gradPcell)
+            : step_(step), owned_(owned), U_(Ucell), gradP_(gradPcell),
+              buoyancyPerVolume_(-step.fluid_.rho * step.settings_.gravity) {}
+        const CouplingStep& step_;
+        const OwnedParticles& owned_;
+        const double* U_;
+        const double* gradP_;
+        Vec3 buoyancyPerVolume_;
+    };
+    // Checks that `owned` is the list of the last particlesToCells.
+    Forces forces(const OwnedParticles& owned, const double* Ucell, const double* gradPcell) const;
+
     const CouplingStepStats& stats() const { return stats_; }
 
     // Bytes held by this object's buffers (vector capacities, i.e. their high
@@ -71,9 +93,23 @@ private:
     const CouplingSettings& settings_;
     const CellLocator& mesh_;
     FluidProperties fluid_;
-    // Stencils of the particles of the last step, CSR layout.
-    std::vector<std::int64_t> offset_;
-    std::vector<CellWeight> weights_;
+    // Stencils of the particles of the last step, CSR layout in two arrays
+    // (an array of CellWeight would pad each 12-byte pair to 16). None for a
+    // model whose stencil is always the centre cell alone (`centre`): there
+    // the cell is owned.cell(p) and the weight 1.
+    bool centreOnly_;
+    std::vector<std::uint32_t> offset_;
+    std::vector<int> stencilCell_;
+    std::vector<double> stencilWeight_;
+    // Calls f(cell, weight) for each stencil entry of owned particle p.
+    template <class F>
+    void forEachWeight(const OwnedParticles& owned, std::size_t p, F&& f) const {
+        if (centreOnly_) {
+            f(owned.cell(p), 1.0);
+            return;
+        }
+        for (std::uint32_t k = offset_[p]; k < offset_[p + 1]; ++k) f(stencilCell_[k], stencilWeight_[k]);
+    }
     std::vector<double> beta_;     // per particle [kg/s]
     std::vector<double> solid_;    // per cell, workspace
     std::vector<double> sumBeta_;  // per cell, workspace

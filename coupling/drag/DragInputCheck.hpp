@@ -7,15 +7,14 @@
 //     drag law ErgunGidaspow: void fraction 1.3 outside (0, 1]
 // so the caller can append the particle id.
 #pragma once
-#include <string>
-
 #include "core/Particle.hpp"
 
 namespace granair {
 
 // Throws InputError unless d > 0, 0 < eps <= 1, slip >= 0, rho > 0, mu > 0,
 // all finite. lawName only goes into the message.
-void checkDragInput(const std::string& lawName, double d, double eps, double slip,
-                    const FluidProperties& f);
+// lawName: the law's typeName. Called per particle and coupling step: it
+// builds no string unless an input is bad.
+void checkDragInput(const char* lawName, double d, double eps, double slip, const FluidProperties& f);
 
 }  // namespace granair

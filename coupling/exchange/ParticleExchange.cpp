@@ -1,6 +1,7 @@
 // ParticleExchange.cpp: see ParticleExchange.hpp and docs/exchange.md.
 #include "exchange/ParticleExchange.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -130,14 +131,20 @@ struct ParticleExchange::Impl {
         int rank;
         std::size_t first, count;
     };
-    // DEM side: per CFD owner rank, the dem indices it kept (in dem order) are
-    // routeDem[first .. first+count).
+    // DEM side: per remote CFD owner rank, the dem indices it kept (in dem
+    // order) are routeDem[first .. first+count) (own particles: selfDem).
     std::vector<Route> sendRoutes;
     std::vector<int> routeDem;
     // CFD side: per source rank (ascending), owned[first .. first+count).
     std::vector<Route> recvRoutes;
     std::size_t nDem = 0, nOwned = 0;
-    std::vector<double> values;  // backward(): received values
+    std::vector<double> values;      // backward(): received values
+    std::vector<double> sendValues;  // backward(): values of the remote owned particles, by route
+    // Between backwardFill() and backwardSend(): the output, width and this
+    // rank's verdict.
+    std::vector<double>* backwardOut = nullptr;
+    int backwardWidth = 0;
+    std::string backwardProblem;
     std::vector<MPI_Request> requests;
 
     int outboxFor(int r) {
@@ -178,6 +185,10 @@ void ParticleExchange::Impl::findCandidates(const std::vector<ParticleState>& de
     selfMulti.clear();
     multis.clear();
     multiCandidates.clear();
+    // At most one self record per particle: reserved to the list's size, not
+    // grown by doubling (the memory report counts capacities).
+    reserveAtLeast(selfDem, dem.size());
+    reserveAtLeast(selfMulti, dem.size());
     for (int i = 0; i < static_cast<int>(dem.size()); ++i) {
         const ParticleState& p = dem[i];
         if (!p.x.allFinite()) {
@@ -255,7 +266,6 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<P
     selfCell.resize(selfDem.size());
     for (std::size_t j = 0; j < selfDem.size(); ++j) {
         const ParticleState& p = dem[selfDem[j]];
-        selfHints.note(j, p.id);
         int cell = mesh.findCellNear(p.x, selfHints.lastCell(j, p.id));
         if (cell < 0) {
             ++stats.hintMisses;
@@ -272,6 +282,8 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<P
                            "'s CFD box but in none of its cells)");
     }
     stats.reordered = selfHints.sortedLookups();
+    stats.tagSearches = selfHints.tagSearches();
+    selfHints.endStep(selfDem.size(), [&](std::size_t j) { return dem[selfDem[j]].id; });
     nInbound = static_cast<int>(inbox.messages.size());
     if (static_cast<int>(inbound.size()) < nInbound) inbound.resize(nInbound);
     cells.clear();
@@ -387,6 +399,9 @@ void ParticleExchange::Impl::sendDecisions(ExchangeStats& stats) {
 void ParticleExchange::Impl::buildRoutes(const std::vector<ParticleState>& dem, OwnedParticles& owned) {
     sendRoutes.clear();
     routeDem.clear();
+    std::size_t sent = 0;
+    for (int b = 0; b < nOutboxes; ++b) sent += outboxes[b].dem.size();
+    reserveAtLeast(routeDem, sent);
     for (int b = 0; b < nOutboxes; ++b) {
         const Outbox& o = outboxes[b];
         const std::size_t first = routeDem.size();
@@ -398,17 +413,13 @@ void ParticleExchange::Impl::buildRoutes(const std::vector<ParticleState>& dem, 
         }
         if (routeDem.size() > first) sendRoutes.push_back({o.rank, first, routeDem.size() - first});
     }
-    {
-        const std::size_t first = routeDem.size();
-        for (std::size_t j = 0; j < selfDem.size(); ++j)
-            if (selfOwns(j)) routeDem.push_back(selfDem[j]);
-        if (routeDem.size() > first) sendRoutes.push_back({rank, first, routeDem.size() - first});
-    }
+    // This rank's own particles need no route: backward() walks selfDem.
 
     // The owned list, by source rank (this rank in its place): own particles
     // by index, inbound records decoded.
     owned.clear();
     owned.local_ = &dem;
+    owned.reserve(selfDem.size() + cells.size());
     recvRoutes.clear();
     auto takeSelf = [&] {
         const std::size_t first = owned.size();
@@ -446,6 +457,11 @@ void OwnedParticles::clear() {
     index_.clear();
     cell_.clear();
     remote_.clear();
+}
+
+void OwnedParticles::reserve(std::size_t n) {
+    reserveAtLeast(index_, n);
+    reserveAtLeast(cell_, n);
 }
 
 void OwnedParticles::addLocal(int demIndex, int cell) {
@@ -528,20 +544,68 @@ void ParticleExchange::forward(const std::vector<ParticleState>& dem, OwnedParti
 }
 
 void ParticleExchange::backward(const std::vector<double>& ownedValues, int width, std::vector<double>& out) {
-    Impl& m = *impl_;
-    // Checked collectively: a rank throwing alone would leave its partners
-    // waiting for its values. One allreduce carries the local verdict and the
-    // width range (a width mismatch would garble every message).
+    const Impl& m = *impl_;
     std::string bad;
+    if (m.routesValid && width >= 1 && ownedValues.size() != m.nOwned * static_cast<std::size_t>(width))
+        bad = "ParticleExchange::backward(): got " + std::to_string(ownedValues.size()) + " values for " +
+              std::to_string(m.nOwned) + " owned particles of width " + std::to_string(width) +
+              "; expected owned.size() * width";
+    const std::size_t w = width >= 1 ? static_cast<std::size_t>(width) : 0;
+    fillBackward(
+        width, [&](std::size_t k, double* dst) { std::copy_n(ownedValues.data() + k * w, w, dst); }, out, bad);
+    backwardSend();
+}
+
+void ParticleExchange::backwardFill(int width, const ValueFill& fill, std::vector<double>& out) {
+    fillBackward(width, fill, out, std::string());
+}
+
+void ParticleExchange::fillBackward(int width, const ValueFill& fill, std::vector<double>& out, std::string bad) {
+    Impl& m = *impl_;
+    // Checked here on this rank and collectively in backwardSend() (a rank
+    // throwing alone would leave its partners waiting for its values); with
+    // a bad verdict nothing is filled.
     if (!m.routesValid) {
         bad = "ParticleExchange::backward(): the last forward() did not succeed (or was never called)";
     } else if (width < 1) {
         bad = "ParticleExchange::backward(): width = " + std::to_string(width) + "; expected >= 1";
-    } else if (ownedValues.size() != m.nOwned * static_cast<std::size_t>(width)) {
-        bad = "ParticleExchange::backward(): got " + std::to_string(ownedValues.size()) + " values for " +
-              std::to_string(m.nOwned) + " owned particles of width " + std::to_string(width) +
-              "; expected owned.size() * width";
     }
+    m.backwardOut = &out;
+    m.backwardWidth = width;
+    m.backwardProblem = bad;
+    if (!bad.empty()) return;
+
+    // Own particles' values go straight to their dem slots (the self part of
+    // the owned list is selfDem's owned entries, in order); the others' into
+    // one send buffer, route after route.
+    const std::size_t w = static_cast<std::size_t>(width);
+    out.assign(m.nDem * w, std::numeric_limits<double>::quiet_NaN());
+    std::size_t remote = 0;
+    for (const Impl::Route& r : m.recvRoutes)
+        if (r.rank != rank_) remote += r.count * w;
+    m.sendValues.resize(remote);
+    std::size_t at = 0;
+    for (const Impl::Route& r : m.recvRoutes) {
+        if (r.rank == rank_) {
+            std::size_t k = r.first;
+            for (std::size_t j = 0; j < m.selfDem.size(); ++j)
+                if (m.selfOwns(j)) fill(k++, out.data() + static_cast<std::size_t>(m.selfDem[j]) * w);
+            continue;
+        }
+        for (std::size_t k = 0; k < r.count; ++k) fill(r.first + k, m.sendValues.data() + at + k * w);
+        at += r.count * w;
+    }
+}
+
+void ParticleExchange::backwardSend() {
+    Impl& m = *impl_;
+    if (!m.backwardOut) fail("ParticleExchange::backwardSend() without backwardFill()");
+    std::vector<double>& out = *m.backwardOut;
+    m.backwardOut = nullptr;
+    const int width = m.backwardWidth;
+    // One allreduce carries the local verdicts and the width range (a width
+    // mismatch would garble every message).
+    std::string bad = m.backwardProblem;
     int check[3] = {bad.empty() ? 0 : 1, width, -width}, global[3];
     MPI_Allreduce(check, global, 3, MPI_INT, MPI_MAX, m.comm);
     if (global[0] != 0 || global[1] != -global[2]) {
@@ -552,43 +616,31 @@ void ParticleExchange::backward(const std::vector<double>& ownedValues, int widt
     }
 
     const std::size_t w = static_cast<std::size_t>(width);
-    out.assign(m.nDem * w, std::numeric_limits<double>::quiet_NaN());
     std::size_t total = 0;
-    for (const Impl::Route& r : m.sendRoutes)
-        if (r.rank != rank_) total += r.count * w;
+    for (const Impl::Route& r : m.sendRoutes) total += r.count * w;
     m.values.resize(total);
 
     m.requests.clear();
     std::size_t at = 0;
     for (const Impl::Route& r : m.sendRoutes) {
-        if (r.rank == rank_) continue;
         m.requests.emplace_back();
         MPI_Irecv(m.values.data() + at, static_cast<int>(r.count * w), MPI_DOUBLE, r.rank, kTagValues, m.comm,
                   &m.requests.back());
         at += r.count * w;
     }
+    at = 0;
     for (const Impl::Route& r : m.recvRoutes) {
-        const double* src = ownedValues.data() + r.first * w;
-        if (r.rank == rank_) {
-            // Own particles: the self route lists their dem indices in the
-            // same order as they were appended to `owned`.
-            for (const Impl::Route& s : m.sendRoutes)
-                if (s.rank == rank_)
-                    for (std::size_t k = 0; k < s.count; ++k)
-                        for (std::size_t j = 0; j < w; ++j)
-                            out[m.routeDem[s.first + k] * w + j] = src[k * w + j];
-            continue;
-        }
+        if (r.rank == rank_) continue;  // filled in place by backwardFill()
         m.requests.emplace_back();
-        MPI_Isend(src, static_cast<int>(r.count * w), MPI_DOUBLE, r.rank, kTagValues, m.comm,
+        MPI_Isend(m.sendValues.data() + at, static_cast<int>(r.count * w), MPI_DOUBLE, r.rank, kTagValues, m.comm,
                   &m.requests.back());
         stats_.bytesSent += static_cast<std::int64_t>(r.count * w * sizeof(double));
+        at += r.count * w;
     }
     MPI_Waitall(static_cast<int>(m.requests.size()), m.requests.data(), MPI_STATUSES_IGNORE);
 
     at = 0;
     for (const Impl::Route& r : m.sendRoutes) {
-        if (r.rank == rank_) continue;
         for (std::size_t k = 0; k < r.count; ++k)
             for (std::size_t j = 0; j < w; ++j)
                 out[m.routeDem[r.first + k] * w + j] = m.values[at + k * w + j];
@@ -603,7 +655,7 @@ std::size_t ParticleExchange::bufferBytes() const {
                     capacityBytes(m.selfKeep) + capacityBytes(m.multis) + capacityBytes(m.multiCandidates) +
                     capacityBytes(m.inbox.bytes) + capacityBytes(m.inbox.messages) +
                     capacityBytes(m.inbound) + capacityBytes(m.cells) + capacityBytes(m.sendRoutes) +
-                    capacityBytes(m.routeDem) + capacityBytes(m.recvRoutes) + capacityBytes(m.values) +
+                    capacityBytes(m.routeDem) + capacityBytes(m.recvRoutes) + capacityBytes(m.values) + capacityBytes(m.sendValues) +
                     capacityBytes(m.requests) + capacityBytes(cfdBounds_) + m.selfHints.bufferBytes();
     for (const Impl::Outbox& o : m.outboxes)
         n += capacityBytes(o.message) + capacityBytes(o.multi) + capacityBytes(o.dem) +

@@ -35,7 +35,9 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/Particle.hpp"
@@ -86,6 +88,7 @@ public:
     const_iterator end() const { return {this, size()}; }
 
     void clear();
+    void reserve(std::size_t n);  // room for n particles (exactly, not by doubling)
     void add(const ParticleState& p, int cell);
     std::size_t bufferBytes() const;
 
@@ -115,6 +118,7 @@ struct ExchangeStats {
     // records).
     std::int64_t hintMisses = 0;
     std::int64_t reordered = 0;
+    std::int64_t tagSearches = 0;  // of the reordered: found by binary search (TagCellHints)
     std::int64_t globalSearches = 0;
 };
 
@@ -152,6 +156,20 @@ public:
     // width < 1 or differs between ranks, or when the last forward() failed.
     void backward(const std::vector<double>& ownedValues, int width, std::vector<double>& out);
 
+    // backward() in two halves, with no per-particle array of values in
+    // between: backwardFill() calls fill(k, dst) for every owned particle k
+    // of the last forward(), which writes its `width` doubles to dst (the DEM
+    // owner's slot in `out` for this rank's own particles, the message to
+    // their owner for the others; no messages yet, no MPI call);
+    // backwardSend() sends those messages and fills the rest of `out` (which
+    // must stay alive in between). Both collective in effect: every rank calls
+    // backwardSend() after its backwardFill(); the checks of backward() are
+    // raised there, on all ranks together (nothing is filled on a rank whose
+    // check failed).
+    using ValueFill = std::function<void(std::size_t k, double* dst)>;
+    void backwardFill(int width, const ValueFill& fill, std::vector<double>& out);
+    void backwardSend();
+
     const ExchangeStats& stats() const { return stats_; }
     // Bytes held by the exchange's buffers on this rank (vector capacities,
     // i.e. their high-water mark; the O(nRanks) box index is not counted),
@@ -163,6 +181,7 @@ private:
     // Buffers and routes of the last forward(), and the phases of forward()
     // as its member functions; defined in ParticleExchange.cpp.
     struct Impl;
+    void fillBackward(int width, const ValueFill& fill, std::vector<double>& out, std::string problem);
     MPI_Comm comm_;
     const CellLocator& mesh_;
     double margin_;

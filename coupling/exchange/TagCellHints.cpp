@@ -10,6 +10,11 @@
 
 namespace granair {
 
+namespace {
+// Positions tried on either side of the shifted one before the binary search.
+constexpr std::ptrdiff_t kWindow = 4;
+}  // namespace
+
 std::int32_t TagCellHints::key(std::int64_t id) {
     // LIGGGHTS 3.8 tags are int; anything else gets a key no tag has (a
     // wrong or missing hint only costs a search, never a wrong cell).
@@ -18,15 +23,15 @@ std::int32_t TagCellHints::key(std::int64_t id) {
 
 void TagCellHints::beginStep(std::vector<int>& cells) {
     std::swap(lastCells_, cells);
-    std::swap(lastIds_, ids_);
-    // A forward() that failed part-way noted fewer tags than it found cells,
-    // or the other way round: keep the aligned part only.
+    // A forward() that stopped part-way left tags and cells of different
+    // lengths: keep the aligned part only.
     const std::size_t n = std::min(lastIds_.size(), lastCells_.size());
     lastIds_.resize(n);
     lastCells_.resize(n);
-    ids_.clear();
     sorted_ = false;
+    shift_ = 0;
     sortedLookups_ = 0;
+    tagSearches_ = 0;
 }
 
 int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
@@ -34,6 +39,18 @@ int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
     if (k < 0) return -1;
     if (j < lastIds_.size() && lastIds_[j] == k) return lastCells_[j];
     if (lastIds_.empty()) return -1;
+    // The shifted position and its neighbours, nearest first.
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(lastIds_.size());
+    const std::ptrdiff_t guess = static_cast<std::ptrdiff_t>(j) + shift_;
+    for (std::ptrdiff_t d = 0; d <= kWindow; d = d > 0 ? -d : 1 - d) {
+        const std::ptrdiff_t at = guess + d;
+        if (at >= 0 && at < n && lastIds_[static_cast<std::size_t>(at)] == k) {
+            shift_ = at - static_cast<std::ptrdiff_t>(j);
+            ++sortedLookups_;
+            return lastCells_[static_cast<std::size_t>(at)];
+        }
+    }
+    ++tagSearches_;
     if (!sorted_) {
         byId_.resize(lastIds_.size());
         std::iota(byId_.begin(), byId_.end(), 0);
@@ -45,16 +62,12 @@ int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
                                      [this](std::int32_t pos, std::int32_t tag) { return lastIds_[pos] < tag; });
     if (it == byId_.end() || lastIds_[*it] != k) return -1;  // a new particle
     ++sortedLookups_;
+    shift_ = static_cast<std::ptrdiff_t>(*it) - static_cast<std::ptrdiff_t>(j);
     return lastCells_[*it];
 }
 
-void TagCellHints::note(std::size_t j, std::int64_t id) {
-    if (ids_.size() <= j) ids_.resize(j + 1, -1);
-    ids_[j] = key(id);
-}
-
 std::size_t TagCellHints::bufferBytes() const {
-    return capacityBytes(ids_) + capacityBytes(lastIds_) + capacityBytes(lastCells_) + capacityBytes(byId_);
+    return capacityBytes(lastIds_) + capacityBytes(lastCells_) + capacityBytes(byId_);
 }
 
 }  // namespace granair

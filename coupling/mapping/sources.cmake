@@ -1,1 +1,1 @@
-list(APPEND GRANAIR_COUPLING_SOURCES mapping/BoxMesh.cpp)
+list(APPEND GRANAIR_COUPLING_SOURCES mapping/BoxMesh.cpp mapping/CellLocator.cpp)

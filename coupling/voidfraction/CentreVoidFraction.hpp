@@ -33,6 +33,7 @@ public:
     std::string name() const override { return typeName; }
     void stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,
                  std::vector<CellWeight>& out) const override;
+    bool centreCellOnly() const override { return true; }
 };
 
 }  // namespace granair

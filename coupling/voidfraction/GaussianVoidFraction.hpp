@@ -37,9 +37,14 @@
 //            for a pseudo-time T corresponds to width = sqrt(2 T).
 //   cutoff   truncation radius in widths [-], 1 <= cutoff <= 10, default 3.
 //            Cost grows as (cutoff * width / cell size)^3 cells per particle:
-//            on a BoxMesh roughly 70 ns per stencil cell, i.e. 7-16 us per
-//            particle for width = cell size (106 cells) and 45-85 us for
-//            width = 2 cell sizes (790 cells), so keep width near the cell size.
+//            on a BoxMesh roughly 70 ns per stencil cell through the
+//            locator's virtual calls (measured before the search read the flat
+//            CellLocator::cellArrays), i.e. 7-16 us per particle for width =
+//            cell size (106 cells) and 45-85 us for width = 2 cell sizes (790
+//            cells), so keep width near the cell size. On the wedge-silo demo
+//            (5.6 cells per stencil) the whole void fraction + mapping stage
+//            costs 246 ns per parcel and coupling step with the flat arrays
+//            (339 ns before; bench/results/mapping-exchange-cpu.md).
 //
 // References: the Gaussian kernel of the statistical kernel method, as
 // analysed by Sun, R., Xiao, H. (2015), Diffusion-based coarse graining in

@@ -32,6 +32,10 @@ public:
     // (out is cleared first). Weights are >= 0 and sum to 1 to round-off.
     virtual void stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,
                          std::vector<CellWeight>& out) const = 0;
+
+    // True when every stencil is {centreCell, 1} (`centre`): the coupling
+    // step then keeps no stencils (owned.cell(p) with weight 1 is the same).
+    virtual bool centreCellOnly() const { return false; }
 };
 
 // The registry of void-fraction models (registerVoidFractionModels.cpp),

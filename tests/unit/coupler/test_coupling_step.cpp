@@ -40,6 +40,19 @@ OwnedParticles lattice(const BoxMesh& mesh, int perAxis, const Vec3& lo, const V
     return out;
 }
 
+// n particles of one radius at random places in the 0.02 x 0.02 x 0.04 m
+// box, random velocities up to 0.1 m/s per component.
+OwnedParticles randomParticles(const BoxMesh& mesh, int n, unsigned seed, double radius) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> ux(0.0, 0.02), uz(0.0, 0.04), uv(-0.1, 0.1);
+    OwnedParticles parts;
+    for (int i = 0; i < n; ++i) {
+        const ParticleState p{i + 1, Vec3(ux(rng), ux(rng), uz(rng)), Vec3(uv(rng), uv(rng), uv(rng)), radius};
+        parts.add(p, mesh.findCell(p.x));
+    }
+    return parts;
+}
+
 }  // namespace
 
 TEST_CASE("void fraction is one minus the particle volume per cell", "[coupler]") {
@@ -62,13 +75,7 @@ TEST_CASE("momentum given to the air equals the drag on the particles", "[couple
     for (const std::string vf : {"centre", "divided", "gaussian"}) {
         auto cs = settings("DiFelice", vf);
         CouplingStep step(cs, mesh, FluidProperties{1.2, 1.8e-5});
-        std::mt19937 rng(42);
-        std::uniform_real_distribution<double> ux(0.0, 0.02), uz(0.0, 0.04), uv(-0.1, 0.1);
-        OwnedParticles parts;
-        for (int i = 0; i < 500; ++i) {
-            const ParticleState p{i + 1, Vec3(ux(rng), ux(rng), uz(rng)), Vec3(uv(rng), uv(rng), uv(rng)), 5e-4};
-            parts.add(p, mesh.findCell(p.x));
-        }
+        const OwnedParticles parts = randomParticles(mesh, 500, 42, 5e-4);
         const int n = mesh.nCells();
         std::vector<double> U(3 * n), eps(n), K(n), Us(3 * n), gradP(3 * n, 0.0), f;
         for (int c = 0; c < n; ++c) {
@@ -150,4 +157,56 @@ TEST_CASE("void fraction floor is applied and counted", "[coupler]") {
     CHECK(step.stats().floorHits == 1);
     CHECK(step.stats().minRawVoidFraction == Approx(1 - 4.0 / 3.0 * M_PI * 0.0008 * 0.0008 * 0.0008 / 1e-9));
     CHECK(eps[1] == 1.0);
+}
+
+namespace {
+// `centre` with its fast path switched off: the coupling step stores and
+// walks its one-cell stencils like any other model's.
+struct CentreViaStencils : VoidFractionModel {
+    std::string name() const override { return "centre (stencils kept)"; }
+    void stencil(const CellLocator&, const ParticleState&, int centreCell,
+                 std::vector<CellWeight>& out) const override {
+        out.assign(1, {centreCell, 1.0});
+    }
+};
+}  // namespace
+
+TEST_CASE("centre: no stored stencils, the same numbers bit for bit", "[coupler]") {
+    // The coupling step keeps no stencils for a model whose stencil is always
+    // the centre cell (24 bytes per particle less); eps, K, Us and the forces
+    // must be exactly those of the stored one-cell stencils.
+    BoxMesh mesh(Vec3(0, 0, 0), Vec3(0.02, 0.02, 0.04), {4, 4, 8});
+    auto fast = settings("WenYu", "centre");
+    auto slow = fast;
+    slow.voidFraction = std::make_shared<CentreViaStencils>();
+    REQUIRE(fast.voidFraction->centreCellOnly());
+    REQUIRE_FALSE(slow.voidFraction->centreCellOnly());
+    CouplingStep a(fast, mesh, FluidProperties{1.2, 1.8e-5}), b(slow, mesh, FluidProperties{1.2, 1.8e-5});
+    const OwnedParticles parts = randomParticles(mesh, 300, 7, 4e-4);
+    const int n = mesh.nCells();
+    std::vector<double> U(3 * n), gradP(3 * n);
+    for (int c = 0; c < 3 * n; ++c) {
+        U[c] = 0.01 * (c % 7) - 0.02;
+        gradP[c] = 30.0 * (c % 5) - 50.0;
+    }
+    std::vector<double> eps[2], K[2], Us[2], f[2];
+    CouplingStep* steps[2] = {&a, &b};
+    for (int k = 0; k < 2; ++k) {
+        eps[k].resize(n);
+        K[k].resize(n);
+        Us[k].resize(3 * n);
+        steps[k]->particlesToCells(parts, U.data(), eps[k].data(), K[k].data(), Us[k].data());
+        steps[k]->cellsToParticles(parts, U.data(), gradP.data(), f[k]);
+    }
+    CHECK(eps[0] == eps[1]);
+    CHECK(K[0] == K[1]);
+    CHECK(Us[0] == Us[1]);
+    CHECK(f[0] == f[1]);
+    CHECK(a.particleBufferBytes() < b.particleBufferBytes());
+    // One particle at a time (what the coupled run hands the exchange) gives
+    // the same forces.
+    const CouplingStep::Forces force = a.forces(parts, U.data(), gradP.data());
+    std::vector<double> one(3 * parts.size());
+    for (std::size_t p = 0; p < parts.size(); ++p) force(p, one.data() + 3 * p);
+    CHECK(one == f[0]);
 }

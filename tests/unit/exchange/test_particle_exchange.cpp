@@ -3,6 +3,8 @@
 // particles raise InputError naming the particle id and the bad value.
 // Many-rank routing is tested in tests/mpi/exchange/.
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -80,7 +82,21 @@ TEST_CASE("exchange on one rank owns every particle in dem order, backward round
             CHECK(out[i * width] == static_cast<double>(dem[i].id));
             for (int a = 0; a < 3; ++a) CHECK(out[i * width + 1 + a] == dem[i].x[a]);
         }
+        // The two halves, each value written in place by the fill: the same.
+        std::vector<double> halves;
+        std::size_t calls = 0;
+        ex.backwardFill(
+            width,
+            [&](std::size_t k, double* dst) {
+                ++calls;
+                std::copy_n(values.data() + k * width, width, dst);
+            },
+            halves);
+        ex.backwardSend();
+        CHECK(calls == owned.size());
+        CHECK(halves == out);
     }
+    CHECK_THROWS_WITH(ex.backwardSend(), Contains("without backwardFill"));
 
     // No particles at all.
     owned.add(ParticleState{}, 0);  // cleared by forward()

@@ -52,7 +52,7 @@ TEST_CASE("TagCellHints: by position while the order holds, by tag after a re-so
     std::vector<int> cells;
     h.beginStep(cells);
     cells.assign({10, 11, 12, 13});
-    for (std::size_t j = 0; j < 4; ++j) h.note(j, 100 + static_cast<std::int64_t>(j));
+    h.endStep(4, [](std::size_t j) { return 100 + static_cast<std::int64_t>(j); });
     h.beginStep(cells);  // the cells above become the hints
     CHECK(h.lastCell(0, 100) == 10);
     CHECK(h.lastCell(3, 103) == 13);
@@ -62,6 +62,40 @@ TEST_CASE("TagCellHints: by position while the order holds, by tag after a re-so
     CHECK(h.lastCell(7, 101) == 11);  // beyond the last list
     CHECK(h.lastCell(0, -5) == -1);   // not a LIGGGHTS tag: no hint, no error
     CHECK(h.sortedLookups() == 2);  // the two found elsewhere
+}
+
+TEST_CASE("TagCellHints: a list shifted by a few places needs no tag search", "[exchange]") {
+    // After a DEM sort by spatial bin a particle that changed bin shifts the
+    // ones between by a place: the running offset finds them all.
+    TagCellHints h;
+    std::vector<int> cells;
+    h.beginStep(cells);
+    const std::size_t n = 1000;
+    cells.resize(n);
+    for (std::size_t j = 0; j < n; ++j) cells[j] = static_cast<int>(10 * j);
+    h.endStep(n, [](std::size_t j) { return static_cast<std::int64_t>(j + 1); });
+    h.beginStep(cells);
+    // Now: a new particle first, so tags 1..599 one place later, 301 and 302
+    // swapped among them; 600 gone, so 601..1000 in their old places.
+    std::vector<std::int64_t> now{5000};
+    for (std::int64_t t = 1; t <= 300; ++t) now.push_back(t);
+    now.push_back(302);
+    now.push_back(301);
+    for (std::int64_t t = 303; t <= 1000; ++t)
+        if (t != 600) now.push_back(t);
+    std::size_t found = 0;
+    for (std::size_t j = 0; j < now.size(); ++j) {
+        const int c = h.lastCell(j, now[j]);
+        if (now[j] == 5000) {
+            CHECK(c == -1);
+            continue;
+        }
+        CHECK(c == 10 * (now[j] - 1));
+        ++found;
+    }
+    CHECK(found == n - 1);
+    CHECK(h.sortedLookups() == 598);  // found elsewhere: 1..599 but 302 (in its old place) and 600
+    CHECK(h.tagSearches() == 1);  // the new particle only
 }
 
 TEST_CASE("exchange cell search: a re-sorted list keeps every particle's own last cell as its hint",
