@@ -7,7 +7,8 @@ results/calibrated/N<n>/, `./Allrun --rheology-from calibration --mesh N
 DEM's rate (reference-cg-dem/) and issue 16's +-15 % band.
 Writes results/calibrated/xval.{csv,png}.
 
-Fields (when reference-cg-dem/cg/ exists: `Allrun-dem --cg-every 0.1`, cg.py):
+Fields (when --dem-fields exists, default reference-cg-dem/fields400g/cg/:
+`Allrun-dem --cg-every 0.05 --fill-g 400 ...`, cg.py):
 the DEM's CG fields, time averaged over its steady window, against the
 continuum's, averaged over its written times in the same window (--run, a
 calibrated run written with --ascii; and --run2, e.g. the size-corrected
@@ -18,7 +19,7 @@ fed back), vertical velocity, pressure and the vertical mass flux with its
 integral over the orifice. Writes results/calibrated/xval_fields.{png,json} and
 xval_fields_continuum.csv (the continuum's profiles: run1 = --run, run2 = --run2).
 
-    xval.py [--out DIR] [--run DIR] [--run2 DIR] [--label2 TEXT]
+    xval.py [--out DIR] [--dem-fields DIR] [--run DIR] [--run2 DIR] [--label2 TEXT]
 """
 import csv
 import json
@@ -71,9 +72,9 @@ def argparse_namespace(settings):
 
 def fields(a):
     """The field comparison (module docstring); None without the DEM's CG fields."""
-    cgdir = os.path.join(HERE, "reference-cg-dem", "cg")
+    cgdir = a.dem_fields
     if not os.path.exists(os.path.join(cgdir, "cg_numbers.json")):
-        print(f"mcc-hopper xval: no {os.path.relpath(cgdir, HERE)}/ (Allrun-dem --cg-every 0.1): fields skipped")
+        print(f"mcc-hopper xval: no {os.path.relpath(cgdir, HERE)}/cg_numbers.json (Allrun-dem --cg-every T): fields skipped")
         return None
     with open(os.path.join(cgdir, "cg_numbers.json")) as fh:
         num = json.load(fh)
@@ -158,7 +159,9 @@ def fields(a):
 
 def main():
     ap = gc.cli.parser(__doc__)
-    ap.add_argument("--run", default=os.path.join(HERE, "results", "calibrated", "runs", "N28"),
+    ap.add_argument("--dem-fields", default=os.path.join(HERE, "reference-cg-dem", "fields400g", "cg"),
+                    help="the DEM's CG fields (cg.py's output folder)")
+    ap.add_argument("--run", default=os.path.join(HERE, "results", "calibrated", "fields400g", "runs", "N28"),
                     help="the continuum run folder of the field comparison (written with --ascii)")
     ap.add_argument("--run2", default=None, help="a second continuum run folder for the fields")
     ap.add_argument("--label2", default="continuum, second run")
