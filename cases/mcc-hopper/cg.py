@@ -81,9 +81,10 @@ def wall_friction(run, steps, v):
     return float(sums[0, 0] / sums[0, 1]), float(sums[1, 0] / sums[1, 1]), n_contacts
 
 
-def fields(run, v, t_from, t_to, out, c):
+def fields(run, v, t_from, t_to, out, c, reuse=False):
     """granairCG on the snapshots of [t_from, t_to] of the discharge folder `run`; the profiles
-    and numbers into out; the mass-flow check into c. Returns the numbers."""
+    and numbers into out; the mass-flow check into c. Returns the numbers. reuse: keep an
+    existing out/cg_rz.csv (post-processing again)."""
     dt = v["DEM_DT"]
     steps = [s for s in snapshot_steps(run) if t_from - 1e-9 <= s * dt <= t_to + 1e-9]
     if len(steps) < 2:
@@ -93,7 +94,8 @@ def fields(run, v, t_from, t_to, out, c):
     w, h, opts = grid_options(v)
     cg_dir = os.path.join("dem", "post", "cg")
     stem = os.path.abspath(os.path.join(out, "cg_rz"))
-    cpu = gc.cg.run(run, stem, dict(
+    # reuse: a grid of the same snapshots already computed (granairCG costs ~10 CPU-s a snapshot)
+    cpu = 0.0 if reuse and os.path.exists(stem + ".csv") else gc.cg.run(run, stem, dict(
         particles=os.path.join(cg_dir, "particles_*.dump"), pairs=os.path.join(cg_dir, "pairs_*.dump"),
         walls=os.path.join(cg_dir, "walls_*.dump"), dt=f"{dt:.12g}", kernel="gauss", width=f"{w:.9g}",
         spacing=f"{h:.9g}", **opts, **{"time-average": "uniform", "from": f"{t_from - 1e-9:.9g}",
@@ -110,7 +112,7 @@ def fields(run, v, t_from, t_to, out, c):
     ts = gc.powder.dem(run)
     counted = gc.series.slope(ts["t"], ts["series"]["discharged_kg"], t_from, t_to)
     inside = r < P.R_OUT
-    jz = -f["momentum_density_z"][inside, iz]
+    jz = -f["momentum_density_z"][:, iz]
     num = dict(snapshots=len(steps), t_from_s=steps[0] * dt, t_to_s=steps[-1] * dt, kernel_width_m=w, spacing_m=h,
                axis_ring_r_m=float(r[ia]), orifice_row_z_m=float(z[iz]), cg_mass_flow_kg_s=flux,
                counted_mass_flow_kg_s=counted, granairCG_cpu_s=round(cpu, 1),

@@ -60,7 +60,10 @@ def continuum_fields(run, t0, t1, r_axis):
             acc.append(dict(solid=al * phi_b, dilatant=al * c["phiSolid"],
                             velocity_z=np.where(al >= 0.05, c["U_z"], np.nan), pressure=np.where(al >= 0.05, c["p"], np.nan),
                             flux=-al * rho_b * c["U_z"]))
-        out[kind] = (coord, {k: np.nanmean([x[k] for x in acc], axis=0) for k in acc[0]})
+        vals = {k: np.nanmean([x[k] for x in acc], axis=0) for k in acc[0]}
+        if kind == "orifice":      # beyond the orifice edge z = 0 is inside the cone wall: the interpolation
+            vals = {k: np.where(coord <= P.R_OUT + 1e-9, y, np.nan) for k, y in vals.items()}   # would cross it
+        out[kind] = (coord, vals)
     return out, times, settings
 
 
@@ -161,7 +164,7 @@ def main():
     ap = gc.cli.parser(__doc__)
     ap.add_argument("--dem-fields", default=os.path.join(HERE, "reference-cg-dem", "fields400g", "cg"),
                     help="the DEM's CG fields (cg.py's output folder)")
-    ap.add_argument("--run", default=os.path.join(HERE, "results", "calibrated", "fields400g", "runs", "N28"),
+    ap.add_argument("--run", default=os.path.join(HERE, "results", "calibrated", "runs", "N28"),
                     help="the continuum run folder of the field comparison (written with --ascii)")
     ap.add_argument("--run2", default=None, help="a second continuum run folder for the fields")
     ap.add_argument("--label2", default="continuum, second run")
