@@ -67,17 +67,8 @@ def main():
     print("\n".join(lines))
     plt = gc.plots.pyplot()
     fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot([1 / r["N"] for r in rows], w, "o-", label=a.label)
-    if g["convergence"] == "monotonic":
-        ax.plot([0], [g["extrapolated"]], "k*", ms=10, label="Richardson extrapolation (order %.2f)" % g["order"])
-        ax.errorbar([1 / s["N"][0]], [s["W"][0]], yerr=[g["gci_fine"] * s["W"][0]], fmt="none", ecolor="k", capsize=4,
-                    label="GCI_fine %.2f %%" % (100 * g["gci_fine"]))
-    for r in rows:
-        ax.annotate("N = %d" % r["N"], (1 / r["N"], r["W"]), textcoords="offset points", xytext=(5, 5), fontsize=8)
-    ax.set(xlabel="1/N (N cells across the slot)", ylabel="steady mass flow W [kg/s]")
-    ax.set_xlim(left=-0.005)
+    gc.plots.mesh_study(ax, [r["N"] for r in rows], w, g, a.label, "the slot")
     ax.set_title("wedge silo b = 10 mm, dry, continuum: mesh convergence", fontsize=10)
-    ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(a.out, "convergence.png"))
