@@ -125,18 +125,9 @@ def plot(mesh_rows, s, out, bev):
     plt = gc.plots.pyplot()
     fig, ax = plt.subplots(figsize=(6, 4.2))
     ax.axhspan(*bev, color="0.88", label="Beverloo, k = 3..1")
-    ax.plot([1 / r["N"] for r in mesh_rows], [r["W"] for r in mesh_rows], "o-", label="granairContinuumFoam")
-    g = s["gci"]
-    if g["convergence"] == "monotonic":
-        ax.plot([0], [g["extrapolated"]], "k*", ms=10, label="Richardson extrapolation (order %.2f)" % g["order"])
-        ax.errorbar([1 / s["N"][0]], [s["W"][0]], yerr=[g["gci_fine"] * s["W"][0]], fmt="none", ecolor="k",
-                    capsize=4, label="GCI_fine %.2f %%" % (100 * g["gci_fine"]))
-    for r in mesh_rows:
-        ax.annotate("N = %d" % r["N"], (1 / r["N"], r["W"]), textcoords="offset points", xytext=(5, 5), fontsize=8)
-    ax.set(xlabel="1/N (N cells across the orifice diameter)", ylabel="steady mass flow W [kg/s]")
-    ax.set_xlim(left=-0.004)
+    gc.plots.mesh_study(ax, [r["N"] for r in mesh_rows], [r["W"] for r in mesh_rows], s["gci"], "granairContinuumFoam",
+                        "the orifice diameter")
     ax.set_title("MCC hopper, continuum mu(I): mesh convergence", fontsize=10)
-    ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(out, "convergence.png"))

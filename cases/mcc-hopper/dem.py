@@ -2,7 +2,7 @@
 """The MCC hopper in coarse-grained DEM, dry (granairFoam `air off`; README.md,
 "Coarse-grained DEM").
 
-    dem.py [--out DIR] [--quick] [--check] [--s S] [--fill-g G] [--end T] [--np 1|2] [--setup-only]
+    dem.py [--out DIR] [--quick] [--check] [--s S] [--fill-g G] [--end T] [--np 1|2] [--cg-every T] [--setup-only]
 
 Fill (OUT/runs/fill): random sequential addition of parcels of s x 660 um in
 the cone and cylinder above the shutter (z = 0), settled on it for at least
@@ -18,6 +18,12 @@ closes exactly (inserted = in hopper + between outlet and sink + removed at
 the sink = parcels packed, lost 0: integer counts), and the steady rate within
 the Beverloo band of the parcel diameter (k = 1..3), where the measured
 s = 5 and s = 6 rates fall (k = 1.51, 1.46; README).
+
+--cg-every T (s, 0 = off): the discharge also writes the CG dumps
+(dem-side/liggghts/cg-dumps.liggghts: particles, pairs, cone contacts) every
+T; cg.py then computes the CG fields (granairCG, RZ about the axis, time
+averaged over the steady window) into OUT/cg/ and checks their mass flow
+through the orifice against the counted one (README, "Cross-validation").
 """
 import math
 import os
@@ -47,7 +53,8 @@ def numbers(a):
                 SETTLE_MIN=a.settle_min, SETTLE_MAX=0.6, N_MIN=math.ceil(a.settle_min / (chunk * dem_dt)),
                 N_MAX=math.ceil(0.6 / (chunk * dem_dt)), T_END=n_steps * P.CFD_DT, CFD_DT=P.CFD_DT, N_STEPS=n_steps,
                 NP=a.np, SINK_Z=P.SINK_Z, THERMO_EVERY=round(0.1 / dem_dt), FILL="../fill", HALF=P.BOX_HALF,
-                Z0=P.SINK_Z - 0.01, RAYLEIGH_S=t_r)
+                Z0=P.SINK_Z - 0.01, RAYLEIGH_S=t_r, CG_EVERY=round(a.cg_every / dem_dt),
+                GRANAIR_ROOT=os.path.normpath(os.path.join(HERE, "..", "..")))
 
 
 def packing(v, seed):
@@ -191,11 +198,14 @@ def main():
     ap.add_argument("--settle-min", type=float, default=0.2, help="minimum settling time [s]")
     ap.add_argument("--steady-from", type=float, default=0.5, help="start of the steady window [s]")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--cg-every", type=float, default=0.0,
+                    help="CG dumps every T s of the discharge and the CG fields of the steady window (default 0: off)")
     a = gc.cli.parse(ap, os.path.join(HERE, "reference-cg-dem"))
     if a.quick:
         a.fill_g, a.end, a.settle_min, a.steady_from = 150.0, 0.25, 0.1, 0.1
-    if not a.s >= 1 or not 0 < a.fill_g <= 1500 or not a.end > 0 or a.np not in (1, 2):
-        ap.error(f"--s {a.s} (>= 1), --fill-g {a.fill_g} (0-1500 g), --end {a.end} (> 0), --np {a.np} (1 or 2)")
+    if not a.s >= 1 or not 0 < a.fill_g <= 1500 or not a.end > 0 or a.np not in (1, 2) or not 0 <= a.cg_every < a.end:
+        ap.error(f"--s {a.s} (>= 1), --fill-g {a.fill_g} (0-1500 g), --end {a.end} (> 0), --np {a.np} (1 or 2), "
+                 f"--cg-every {a.cg_every} (0 or a time below --end)")
     runs = gc.runner.clean(os.path.join(a.out, "runs"))
     fill, run = os.path.join(runs, "fill"), os.path.join(runs, "discharge")
     print(f"mcc-hopper cg-dem: s = {a.s:g}, {a.fill_g:g} g, {a.end:g} s of discharge, {a.np} rank(s)", flush=True)
@@ -219,6 +229,9 @@ def main():
                 print([ln for ln in fh if ln.startswith("granair fill:")][-1].strip(), flush=True)
     c = gc.checks.Checks("mcc-hopper cg-dem")
     post(a, v, runs, n_packed, cpu, wall, c)
+    if a.cg_every > 0:
+        import cg
+        cg.fields(run, v, min(a.steady_from, 0.4 * a.end), a.end, os.path.join(a.out, "cg"), c)
     c.report(enforce=a.check)
 
 

@@ -27,6 +27,7 @@ WALL_FRICTION = 0.3               # Coulomb wall friction: the DEM's particle-wa
 CALIBRATION = "mcc-hopper"
 ETA_MAX = "1e5"                   # viscosity cap of mu(I) [Pa s] (README: W does not depend on it)
 MAX_CO = 0.4                      # maxCo and maxAlphaCo
+OUTER_TOLERANCE = 1e-3            # outerTolerance of study.py --outer N > 1 (OuterCorrectors.H)
 # Steady mass flow over Beverloo (k = 1) that the runs gave (README: 0.95-1.11
 # for N = 10-28 with Coulomb, free-slip and no-slip walls, with and without
 # air): outside the band the flow has stopped, burst or the model changed.
@@ -62,8 +63,8 @@ DEM_WINDOW = 0.05                 # s, averaging window of the DEM mass_flow.csv
 V_CONE = math.pi * H_CONE / 3 * (R_OUT ** 2 + R_OUT * R_CYL + R_CYL ** 2)
 
 
-def beverloo(k, rho_b=RHO_BULK, d=D_PARTICLE):
-    return BEVERLOO_C * rho_b * math.sqrt(G) * (D_OUTLET - k * d) ** 2.5
+def beverloo(k, rho_b=RHO_BULK, d=D_PARTICLE, outlet=D_OUTLET):
+    return BEVERLOO_C * rho_b * math.sqrt(G) * (outlet - k * d) ** 2.5
 
 
 def fill_height(mass, rho_b=RHO_BULK):

@@ -5,6 +5,7 @@
              [--air] [--walls coulomb|slip|noSlip] [--wall-friction MU] [--eta-max V]
              [--max-co C] [--transpose-stress on|off] [--freefall L] [--convergence] [--resume]
              [--rheology muI|latzSchmidt] [--rheology-from literature|calibration] [--rheology-d D]
+             [--eta-min V] [--orifice D] [--outer N] [--outer-tolerance R] [--fill-g G]
 
 One run from template/: the axisymmetric wedge mesh at resolution N (cells
 across the orifice diameter) with the free-fall region below the orifice, the
@@ -32,6 +33,14 @@ interrupted study resumes (--resume does the same for a single run). Then Roache
 goes into OUT/convergence/convergence.{csv,json,md,png} and, as "mesh_study",
 into the level.json of the run (`./granair compare` prints it).
 
+Sensitivity options (README, "Cross-validation"): --eta-min sets the
+viscosity floor of mu(I) (default rho_p d sqrt(g d) of the block's d);
+--orifice D [m] makes the orifice D wide with the same cone slope (the cone
+continues down to it, z = 0 stays the orifice plane); --outer N iterates
+each step with up to N outer correctors until U and p change by less than
+--outer-tolerance (default one corrector per step); --fill-g the fill mass
+(the DEM field runs use a smaller fill than 1000 g).
+
 Steady mass flow: least-squares slope of the discharged outlet mass over
 [steady-from, end]. Checked (--check exits 1 on a failure): every value
 finite; the powder mass balance |m(end) + m_out(end) - m(0)| / m(0) <= 0.5 %
@@ -54,37 +63,43 @@ import parameters as P
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def geometry(n_diameter, rho_b, freefall):
+def geometry(n_diameter, rho_b, freefall, outlet=P.D_OUTLET, fill=P.FILL_MASS):
     """The numbers of the wedge mesh with n_diameter cells across the orifice
     diameter (n_diameter/2 across the wedge's radius), the free-fall region of
-    length `freefall` [m] below the orifice, and the fill (template placeholders)."""
+    length `freefall` [m] below the orifice, and the fill (template placeholders).
+    outlet: the orifice diameter; the cone keeps its slope and ends at it (a smaller
+    orifice makes the cone taller by the difference of the radii over its slope); fill [kg]
+    the powder mass, which must fill the cone."""
     n = n_diameter // 2
     t = math.tan(P.WEDGE_HALF_ANGLE)
-    z_apex = -P.H_CONE * P.R_OUT / (P.R_CYL - P.R_OUT)        # cone apex, below the orifice
-    rho_out = math.hypot(P.R_OUT, z_apex)                      # radius of the exit cap
+    r_out = outlet / 2
+    h_cone = (P.R_CYL - r_out) / P.TAN_CONE
+    z_apex = -h_cone * r_out / (P.R_CYL - r_out)              # cone apex, below the orifice
+    rho_out = math.hypot(r_out, z_apex)                        # radius of the exit cap
     z_cap = z_apex + rho_out
-    wall = math.atan2(P.R_CYL - P.R_OUT, P.H_CONE)             # cone wall from the vertical
+    wall = math.atan2(P.R_CYL - r_out, h_cone)                 # cone wall from the vertical
     # junction arc: centre on the axis, tangent at the wall corner to the bisector
     bisector = math.pi - 0.5 * wall
-    z_centre = P.H_CONE - (-math.cos(bisector) / math.sin(bisector)) * P.R_CYL
-    r_junction = math.hypot(P.R_CYL, P.H_CONE - z_centre)
-    phi_c = math.atan2(P.R_CYL, P.H_CONE - z_centre)
+    z_centre = h_cone - (-math.cos(bisector) / math.sin(bisector)) * P.R_CYL
+    r_junction = math.hypot(P.R_CYL, h_cone - z_centre)
+    phi_c = math.atan2(P.R_CYL, h_cone - z_centre)
     cap = (rho_out * math.sin(wall / 2), z_apex + rho_out * math.cos(wall / 2))
     junction = (r_junction * math.sin(phi_c / 2), z_centre + r_junction * math.cos(phi_c / 2))
     # fill: the frustum (the lens between the exit cap and the orifice plane is in the
     # free-fall block, above z = 0, so it is filled too), then the cylinder
-    frustum = math.pi * P.H_CONE / 3 * (P.R_CYL * P.R_CYL + P.R_CYL * P.R_OUT + P.R_OUT * P.R_OUT)
-    fill_z = P.H_CONE + (P.FILL_MASS / rho_b - frustum) / (math.pi * P.R_CYL * P.R_CYL)
-    if not fill_z < P.H_CONE + P.H_CYL:
-        raise gc.CaseError(f"{P.FILL_MASS * 1e3:.0f} g at {rho_b:g} kg/m3 does not fit in the hopper")
+    frustum = math.pi * h_cone / 3 * (P.R_CYL * P.R_CYL + P.R_CYL * r_out + r_out * r_out)
+    fill_z = h_cone + (fill / rho_b - frustum) / (math.pi * P.R_CYL * P.R_CYL)
+    if not h_cone < fill_z < h_cone + P.H_CYL:
+        raise gc.CaseError(f"{fill * 1e3:.0f} g at {rho_b:g} kg/m3: expected a fill above the cone "
+                           f"({frustum * rho_b * 1e3:.0f} g) that fits in the hopper")
     # free-fall cells about as tall as the orifice cells are wide (its axis runs from -L to the cap)
-    n_fall = max(2, round((freefall + 0.5 * z_cap) / (P.R_OUT / n)))
+    n_fall = max(2, round((freefall + 0.5 * z_cap) / (r_out / n)))
     return dict(N=n, N_DIAMETER=n_diameter, N_CONE=max(4, n), N_CYL=max(8, 2 * n), N_FALL=n_fall,
-                FREEFALL=freefall, Z_CAP=z_cap, R_OUT=P.R_OUT, R_OUT_T=P.R_OUT * t,
-                R_CYL=P.R_CYL, R_CYL_T=P.R_CYL * t, H_CONE=P.H_CONE, H_TOP=P.H_CONE + P.H_CYL,
+                FREEFALL=freefall, Z_CAP=z_cap, R_OUT=r_out, R_OUT_T=r_out * t,
+                R_CYL=P.R_CYL, R_CYL_T=P.R_CYL * t, H_CONE=h_cone, H_TOP=h_cone + P.H_CYL,
                 Z_JUNCTION=z_centre + r_junction, CAP_R=cap[0], CAP_RT=cap[0] * t, CAP_Z=cap[1],
                 JUNCTION_R=junction[0], JUNCTION_RT=junction[0] * t, JUNCTION_Z=junction[1],
-                FILL_G=P.FILL_MASS * 1e3, FILL_Z=fill_z, RHO_B=rho_b)
+                FILL_G=fill * 1e3, FILL_Z=fill_z, RHO_B=rho_b)
 
 
 def walls_text(a):
@@ -109,8 +124,11 @@ def write_run(a, n, run):
         rheology = gc.template.fill(fh.read(), dict(ETA_MAX=a.eta_max), block)
     if a.rheology_from == "calibration":
         rheology = gc.calibration.block(rheology, P.CALIBRATION, d=a.rheology_d, where=block)
+    if a.eta_min is not None:
+        rheology = gc.calibration.set_entry(rheology, "etaMin", a.eta_min, "study.py --eta-min")
     rho_b, d = material(a)
-    values = dict(geometry(n, rho_b, a.freefall), END=a.end, NP=a.np,
+    values = dict(geometry(n, rho_b, a.freefall, outlet(a), a.fill_g * 1e-3), END=a.end, NP=a.np,
+                  N_OUTER=a.outer, OUTER_TOL=a.outer_tolerance,
                   WRITE_FORMAT="ascii" if latz or a.ascii else "binary",
                   WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction),
                   MAX_CO=a.max_co, TRANSPOSE=a.transpose_stress,
@@ -125,12 +143,20 @@ SETTINGS = ("mesh", "end", "steady_from", "air", "walls", "wall_friction", "eta_
             "freefall", "rheology")
 CALIBRATION_SETTINGS = ("rheology_from", "rheology_d")   # only with --rheology-from calibration, so the
                                                           # literature runs' settings.json stay as they were
+OPTIONAL_SETTINGS = dict(eta_min=None, orifice=None, outer=1, outer_tolerance=P.OUTER_TOLERANCE,
+                         fill_g=P.FILL_MASS * 1e3)                 # only when not
+                                                          # the default, for the same reason
 
 
 def settings(a, n):
     """What a run's result depends on (res/settings.json; a study reuses a run only if they match)."""
     keys = SETTINGS + (CALIBRATION_SETTINGS if a.rheology_from == "calibration" else ())
+    keys += tuple(k for k, default in OPTIONAL_SETTINGS.items() if getattr(a, k) != default)
     return dict({k: getattr(a, k) for k in keys}, mesh=n, eta_max=float(a.eta_max))
+
+
+def outlet(a):
+    return a.orifice if a.orifice is not None else P.D_OUTLET
 
 
 def finished(res, n, a):
@@ -209,8 +235,8 @@ def post(a, run, res, n, wall, cpu, c, level=True):
         case="mcc-hopper", model=model, b_mm=P.D_OUTLET * 1e3, wall_time_s=float(wall), cores=a.np))
     w, in_window = o["w"], o["flow"][o["centres"] >= a.steady_from]
     w_sd = float(np.sqrt(np.sum((in_window - w) ** 2) / max(1, len(in_window))))
-    bev = (P.beverloo(P.K_RANGE[1], rho_b, d), P.beverloo(P.K_RANGE[0], rho_b, d))
-    fill_error = (r["initial"] - P.FILL_MASS) / P.FILL_MASS
+    bev = (P.beverloo(P.K_RANGE[1], rho_b, d, outlet(a)), P.beverloo(P.K_RANGE[0], rho_b, d, outlet(a)))
+    fill_error = (r["initial"] - a.fill_g * 1e-3) / (a.fill_g * 1e-3)
     keys = [("t_end_s", float(t[-1])), ("steady_from_s", a.steady_from), ("steady_mass_flow_kg_s", w),
             ("window_mass_flow_sd_kg_s", w_sd), ("beverloo_k3_kg_s", bev[0]), ("beverloo_k1_kg_s", bev[1]),
             ("steady_over_beverloo_k1", w / bev[1]), ("initial_powder_kg", r["initial"]), ("fill_error", fill_error),
@@ -232,7 +258,7 @@ def post(a, run, res, n, wall, cpu, c, level=True):
                                           "MCC hopper (Remmelgas et al. 2019)"), os.path.join(res, "mass_flow.png"))
     gc.powder.check_continuum(c, f"N = {n}", r, P.TOLERANCE, "0.5 %: ~2e-4 of the powder leaves through the open "
                               "side of the free-fall region, which the outlet integral counts as error (README)")
-    c.near(f"N = {n}: initial powder / 1000 g fill - 1", fill_error, 0.0, P.TOLERANCE, "setAlphaField of the fill plane")
+    c.near(f"N = {n}: initial powder / {a.fill_g:g} g fill - 1", fill_error, 0.0, P.TOLERANCE, "setAlphaField of the fill plane")
     band = P.LATZ["band"] if latz else P.BAND
     c.within(f"N = {n}: steady mass flow / Beverloo (k = 1)", w / bev[1], *band,
              "the range of the runs in the README: outside it the flow has stopped, burst or changed model")
@@ -263,7 +289,7 @@ def plot(tw, flow, w, bev, a, t_end, label, material, path):
         ax.hlines(w, a.steady_from, t_end, colors="k", linestyles="--",
                   label=f"mean for t >= {a.steady_from:g} s: {w * 1e3:.1f} g/s")
     ax.set(xlabel="t [s]", ylabel="powder mass flow [kg/s]", ylim=(0, max(1.3 * bev[1], 1.1 * max(list(flow) + [0.0]))))
-    ax.set_title(f"{material}, D_o = 25 mm, 1000 g fill", fontsize=9)
+    ax.set_title(f"{material}, D_o = 25 mm, {a.fill_g:g} g fill", fontsize=9)
     ax.legend(loc="upper right", fontsize=8)
     fig.tight_layout()
     gc.plots.save(fig, path)
@@ -298,6 +324,16 @@ def main():
     ap.add_argument("--rheology-d", type=float, default=None,
                     help="with the calibration: the grain diameter of I [m] instead of the parcel's (sensitivity)")
     ap.add_argument("--ascii", action="store_true", help="write the fields as ASCII (for the field profiles)")
+    ap.add_argument("--eta-min", type=float, default=None,
+                    help="viscosity floor of mu(I) [Pa s] (default the block's rho_p d sqrt(g d))")
+    ap.add_argument("--orifice", type=float, default=None,
+                    help=f"orifice diameter [m], the cone's slope kept (default {P.D_OUTLET:g})")
+    ap.add_argument("--fill-g", type=float, default=P.FILL_MASS * 1e3,
+                    help=f"fill mass [g] (default {P.FILL_MASS * 1e3:g}; as the DEM's Allrun-dem --fill-g)")
+    ap.add_argument("--outer", type=int, default=1,
+                    help="outer correctors per step, at most (default 1: a semi-implicit time march)")
+    ap.add_argument("--outer-tolerance", type=float, default=P.OUTER_TOLERANCE,
+                    help=f"with --outer > 1: the relative change of U and p that ends a step (default {P.OUTER_TOLERANCE:g})")
     a = gc.cli.parse(ap, os.path.join(HERE, "results"))
     if a.quick:
         a.mesh = 14
@@ -314,6 +350,12 @@ def main():
         ap.error(f"--rheology-d {a.rheology_d:g}: expected a diameter > 0 [m], with --rheology-from calibration")
     if not a.max_co > 0:
         ap.error(f"--max-co {a.max_co:g}: expected a Courant number > 0")
+    if a.eta_min is not None and not a.eta_min > 0:
+        ap.error(f"--eta-min {a.eta_min:g}: expected a viscosity > 0 [Pa s]")
+    if a.orifice is not None and not 0.004 <= a.orifice <= 2 * P.R_OUT + 0.01:
+        ap.error(f"--orifice {a.orifice:g}: expected a diameter in 0.004-{2 * P.R_OUT + 0.01:g} m")
+    if a.outer < 1 or not 0 < a.outer_tolerance < 1:
+        ap.error(f"--outer {a.outer} (>= 1), --outer-tolerance {a.outer_tolerance:g} (0-1)")
     checks = gc.checks.Checks("mcc-hopper")
     study = None
     if a.convergence and not a.setup_only:

@@ -47,21 +47,28 @@ def step_of(v, t):
     return int(round(t / v["DEM_DT"]))
 
 
-def compute(d, v, t, stem):
-    """granairCG on the one snapshot at time t; returns the CSV path (None without dumps)."""
-    step = step_of(v, t)
+def compute(d, v, t, stem, average=None):
+    """granairCG on the one snapshot at time t; returns the CSV path (None without dumps).
+    average=(t0, t1): instead the uniform time average of every snapshot in [t0, t1] (t unused)."""
     cg = os.path.join(d, "dem", "post", "cg")
-    files = {k: os.path.join(cg, f"{k}_{step}.dump") for k in ("particles", "pairs", "walls")}
-    if not all(os.path.exists(f) for f in files.values()):
-        return None
+    if average:
+        files = {k: os.path.join(cg, f"{k}_*.dump") for k in ("particles", "pairs", "walls")}
+        when = [("time-average", "uniform"), ("from", f"{average[0] - 1e-9:.9g}"), ("to", f"{average[1] + 1e-9:.9g}")]
+        log = f"granairCG_t{average[0]:g}-{average[1]:g}"
+    else:
+        step = step_of(v, t)
+        files = {k: os.path.join(cg, f"{k}_{step}.dump") for k in ("particles", "pairs", "walls")}
+        if not all(os.path.exists(f) for f in files.values()):
+            return None
+        when, log = [], f"granairCG_t{t:g}"
     lo, hi, w = window(v)
     gc.cg.run(d, stem, [("particles", files["particles"]), ("pairs", files["pairs"]), ("walls", files["walls"]),
                         ("plane-wall", ["shaftL", "x", f"{-P.WIDTH / 2:.12g}"]),
                         ("plane-wall", ["shaftR", "x", f"{P.WIDTH / 2:.12g}"]),
                         ("dt", f"{v['DEM_DT']:.12g}"), ("coordinates", "XZ"), ("kernel", "gauss"),
                         ("width", f"{w:.9g}"), ("spacing", f"{w / 2:.9g}"), ("min", [f"{x:.9g}" for x in lo]),
-                        ("max", [f"{x:.9g}" for x in hi]), ("threads", 1), ("format", ["csv", "vti"])],
-              log=f"granairCG_t{t:g}")
+                        ("max", [f"{x:.9g}" for x in hi]), ("threads", 1), ("format", ["csv", "vti"])] + when,
+              log=log)
     return stem + ".csv"
 
 

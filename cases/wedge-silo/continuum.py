@@ -7,7 +7,7 @@ fidelity").
                  [--mesh N] [--walls coulomb|slip|noSlip] [--wall-friction MU] [--freefall L]
                  [--rheology muI|latzSchmidt] [--rheology-from literature|calibration]
                  [--dem-size demo|study] [--rheology-d D] [--write-every T] [--setup-only]
-                 [--fills demo|study] [--until F]
+                 [--fills demo|study] [--until F] [--eta-min V]
 
 One run per b and air setting from continuum/template/ (the silo as a plane
 mesh one cell of the whole 60 mm deep with a free-fall region below the slot,
@@ -122,6 +122,9 @@ def numbers(a, b_mm, air):
             v["RHEOLOGY"] = gc.calibration.block(v["RHEOLOGY"], P.CALIBRATION, d=cal[0], where=path)
             v.update(MU_S=cal[1]["mu_s"], MU_2=cal[1]["mu_2"], JOP_I0=cal[1]["I0"], PHI_MAX=cal[1]["phi_max"],
                      PHI_MIN=cal[1]["phi_min"], D_LACTOSE=cal[0], COHESION_PA=0.0)
+        if a.eta_min is not None:       # the viscosity floor (default rho_p d sqrt(g d)): a sensitivity
+            v["RHEOLOGY"] = gc.calibration.set_entry(v["RHEOLOGY"], "etaMin", a.eta_min, "continuum.py --eta-min")
+            v["ETA_MIN"] = a.eta_min
     return v
 
 
@@ -182,6 +185,8 @@ def post(a, run, out, name, v, cells, wall):
                                                                       * dt[sel]) / np.sum(dt[sel]))))
     with open(os.path.join(out, "details.json"), "w") as fh:
         json.dump(details, fh, indent=1)
+    with open(os.path.join(out, "silo.json"), "w") as fh:      # the run's numbers (mesh, d, ...) beside its results
+        json.dump({k: x for k, x in v.items() if k != "RHEOLOGY"}, fh, indent=1)
     times = [tt for tt, _ in gc.foam.time_dirs(run)]
     gc.plots.case_fields(os.path.join(out, "fields.png"), f"{name}: continuum {v['RHEOLOGY_NAME']}, b = {v['B_MM']} mm",
                          run, times[:1] + times[-1:], [("alpha.powder", "powder fraction alpha", "viridis", (0, 1))]
@@ -248,12 +253,16 @@ def main():
     ap.add_argument("--rheology-d", type=float, default=None,
                     help="with the calibration: the grain diameter of I [m] instead of the DEM parcel's (sensitivity)")
     ap.add_argument("--write-every", type=float, default=None, help="field output interval [s] (default: the end)")
+    ap.add_argument("--eta-min", type=float, default=None,
+                    help="muI: the viscosity floor [Pa s] (default rho_p d sqrt(g d) of the block's d)")
     a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "continuum-results" + ("-latz" if a.rheology == "latzSchmidt" else
                                                                              "-calibrated" if a.rheology_from == "calibration" else "")))
     if a.rheology_from == "calibration" and a.rheology != "muI":
         ap.error("--rheology-from calibration: the calibration is a muI block (--rheology muI)")
     if a.rheology_d is not None and not (a.rheology_d > 0 and a.rheology_from == "calibration"):
         ap.error(f"--rheology-d {a.rheology_d:g}: expected a diameter > 0 [m], with --rheology-from calibration")
+    if a.eta_min is not None and not (a.eta_min > 0 and a.rheology == "muI"):
+        ap.error(f"--eta-min {a.eta_min:g}: expected a viscosity > 0 [Pa s], with --rheology muI")
     if a.write_every is not None and not a.write_every > 0:
         ap.error(f"--write-every {a.write_every:g}: expected an interval > 0 [s]")
     if a.quick:

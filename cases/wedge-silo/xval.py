@@ -2,7 +2,7 @@
 """Cross-validation of the continuum with the DEM-calibrated mu(I) against the
 coarse-grained DEM's CG fields, b = 10 mm, dry (README, "Cross-validation").
 
-    xval.py [--run DIR] [--dem NAME] [--out DIR]
+    xval.py [--run DIR] [--dem NAME] [--out DIR] [--dem-run DIR --dem-windows T0:T1 ...]
 
 --run: the continuum run folder (continuum.py --rheology-from calibration
 --dem-size demo --b 10 --air off --write-every 0.05; default
@@ -18,6 +18,15 @@ velocity the mixture U_z where alpha >= 0.05, its pressure the mixture p
 (the rheology's; the DEM's is the CG mean stress, contacts + kinetic).
 Writes OUT/xval_b10.png, OUT/xval_b10_profiles.csv and OUT/xval_b10.json
 (the slot means on z = 0 and the bulk means on the axis of both).
+
+--dem-run DIR (a DEM run folder of the same run with CG dumps every few
+field steps: study.py --b 10 --runs noair --cg-every 0.05) and --dem-windows:
+the DEM's CG fields are instead the uniform time averages of every snapshot
+in each window (cg.compute(average=...)), at the mean time of its snapshots;
+their profiles go to OUT/cg/ (dem_t<t0>-<t1>_{axis,orifice}.csv; the
+grids to OUT/runs/cg/). A single
+snapshot's contact pressure scatters by tens of per cent at the orifice,
+where only a few parcels touch.
 """
 import csv
 import json
@@ -54,10 +63,39 @@ def dem_profiles(stem, kind):
             for t in np.unique(s["t"]) if t > 0}
 
 
+def dem_profiles_averaged(run, windows, out):
+    """{kind: {mean snapshot time: profile}} of the time-averaged CG fields of a DEM run folder."""
+    import cg
+    with open(os.path.join(run, "case.json")) as fh:
+        v = json.load(fh)
+    steps = sorted(int(n.split("_")[1].split(".")[0]) for n in os.listdir(os.path.join(run, "dem", "post", "cg"))
+                   if n.startswith("particles_"))
+    prof = {"axis": {}, "orifice": {}}
+    os.makedirs(os.path.join(out, "cg"), exist_ok=True)
+    for t0, t1 in windows:
+        ts = [s * v["DEM_DT"] for s in steps if t0 - 1e-9 <= s * v["DEM_DT"] <= t1 + 1e-9]
+        if len(ts) < 2:
+            raise gc.CaseError(f"{run}/dem/post/cg: {len(ts)} CG snapshots in {t0:g}-{t1:g} s, expected >= 2")
+        tm = round(float(np.mean(ts)), 6)
+        stem = os.path.abspath(os.path.join(out, "runs", "cg", f"dem_t{t0:g}-{t1:g}"))   # the grid (not committed)
+        xs, zs, g = cg.read_grid(cg.compute(run, v, None, stem, average=(t0, t1)))
+        ix, iz = int(np.argmin(np.abs(xs))), int(np.argmin(np.abs(zs)))
+        for kind, key, coord, pick in (("axis", "z_m", zs, lambda f: f[:, ix]), ("orifice", "x_m", xs, lambda f: f[iz, :])):
+            p = {key: coord, "cg_solid_fraction": pick(g["volume_fraction"]), "cg_velocity_z": pick(g["velocity_z"]),
+                 "cg_pressure": pick(g["pressure"])}
+            prof[kind][tm] = p
+            gc.series.write_csv(os.path.join(out, "cg", f"dem_t{t0:g}-{t1:g}_{kind}.csv"), list(p.items()), fmt="{:.6g}")
+        print(f"wedge-silo xval: DEM CG time average of {len(ts)} snapshots, t = {ts[0]:g}-{ts[-1]:g} s (mean {tm:g})")
+    return prof
+
+
 def main():
     ap = gc.cli.parser(__doc__)
     ap.add_argument("--run", default=os.path.join(HERE, "reference-continuum-calibrated-demo", "runs", "b10_noair"))
     ap.add_argument("--dem", default="b10_noair")
+    ap.add_argument("--dem-run", default=None, help="a DEM run folder with CG dumps (time-averaged DEM fields)")
+    ap.add_argument("--dem-windows", nargs="+", default=["0.15:0.35", "0.35:0.5"],
+                    help="with --dem-run: the averaging windows T0:T1 [s]")
     a = gc.cli.parse(ap, os.path.join(HERE, "reference-continuum-calibrated-demo"))
     b_mm = 10
     with open(os.path.join(a.run, "silo.json")) as fh:
@@ -66,7 +104,11 @@ def main():
     td, fd, m0 = dem_fraction(a.dem, b_mm)
     tc, fc = continuum_fraction(a.run)
     written = [t for t, _ in gc.foam.time_dirs(a.run) if t > 0]
-    axis, orifice = dem_profiles(a.dem, "axis"), dem_profiles(a.dem, "orifice")
+    if a.dem_run:
+        avg = dem_profiles_averaged(a.dem_run, [tuple(float(x) for x in w.split(":")) for w in a.dem_windows], a.out)
+        axis, orifice = avg["axis"], avg["orifice"]
+    else:
+        axis, orifice = dem_profiles(a.dem, "axis"), dem_profiles(a.dem, "orifice")
     pairs = []
     for t in sorted(axis):
         f = float(np.interp(t, td, fd))
@@ -87,7 +129,7 @@ def main():
             uz = np.where(alpha >= 0.05, c["U_z"], np.nan)
             pc = np.where(alpha >= 0.05, c["p"], np.nan)
             x = coord * 1e3
-            lab_d, lab_c = f"DEM CG, t = {t:g} s ({f:.0%} out)", f"continuum, t = {tcw:g} s ({fcw:.0%} out)"
+            lab_d, lab_c = f"DEM CG{' avg' if a.dem_run else ''}, t = {t:g} s ({f:.0%} out)", f"continuum, t = {tcw:g} s ({fcw:.0%} out)"
             for k, (dem_y, cont_y, name) in enumerate(((prof["cg_solid_fraction"], solid, "solid fraction"),
                                                        (prof["cg_velocity_z"], uz, "v_z [m/s]"),
                                                        (prof["cg_pressure"], pc, "pressure [Pa]"))):
@@ -117,7 +159,8 @@ def main():
         ax.grid(alpha=0.3)
     axes[0, 0].legend(fontsize=7)
     fig.suptitle(f"wedge silo b = {b_mm} mm, dry: coarse-grained DEM (demo, parcels {v['D_LACTOSE'] * 1e3:.3g} mm; "
-                 f"granairCG, kernel 1 d) vs continuum with the DEM-calibrated mu(I) (N = {v['N']})", fontsize=9)
+                 f"granairCG, kernel 1 d{', time averages over ' + ', '.join(a.dem_windows) + ' s' if a.dem_run else ', single snapshots'}) "
+                 f"vs continuum with the DEM-calibrated mu(I) (N = {v['N']})", fontsize=9)
     fig.tight_layout()
     os.makedirs(a.out, exist_ok=True)
     gc.plots.save(fig, os.path.join(a.out, f"xval_b{b_mm}.png"))

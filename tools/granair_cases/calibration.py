@@ -7,8 +7,16 @@ literature block, and keeps the block's numerics (cap, floors,
 regularisation): the solver's dictionary reader has no #include, so the
 entries are replaced in the text.
 
+The viscosity floor stays the literature block's too: muI's default etaMin is
+rho_p d sqrt(g d) of the block's d, so replacing d by the parcel's would raise
+it with the parcel size (x11 for the MCC parcels, x20 for the wedge silo's)
+into the range of the viscosity of the orifice flow, where it throttled the
+calibrated runs by 26-31 % (cases/mcc-hopper README, "Cross-validation");
+block() writes the literature block's floor as an explicit etaMin.
+
     fit(material) -> dict (mu_s, mu_2, I0, phi_max, phi_min, d, rho_p, ses, source)
     block(literature_text, material, d=None, where) -> rheology block text
+    set_entry(text, key, value, note) -> the block with key set (replaced, or added before etaMax)
 
 and the fits that make it (cases/rheology-calibration), to points (I, mu or phi,
 standard error):
@@ -52,6 +60,33 @@ def fit(material, path=RESULTS):
     return out
 
 
+G = 9.81      # the standard gravity of muI's default floor (coupling/rheology/MuI.hpp)
+
+
+def entry(text, key, where="rheology block"):
+    """The numeric value of `key` in a rheology block's text (None if absent)."""
+    m = re.search(r"^\s*" + re.escape(key) + r"\s+([-+0-9.eE]+)\s*;", text, re.M)
+    try:
+        return float(m.group(1)) if m else None
+    except ValueError:
+        raise CaseError(f"{where}: entry '{key}' is not a number")
+
+
+def set_entry(text, key, value, note):
+    """`text` with `key value;` (and the comment note): the entry replaced if the block has
+    it, else added before its etaMax line."""
+    line = f"{key:<11} {value:.6g};   // {note}"
+    text, n = re.subn(r"^(\s*)" + re.escape(key) + r"\s+[^;\n]*;.*$", lambda m: m.group(1) + line, text, count=1,
+                      flags=re.M)
+    if n:
+        return text
+    text, n = re.subn(r"^(\s*)(etaMax\b)", lambda m: f"{m.group(1)}{line}\n{m.group(1)}{m.group(2)}", text, count=1,
+                      flags=re.M)
+    if not n:
+        raise CaseError(f"rheology block: no etaMax entry to put {key} before")
+    return text
+
+
 def block(text, material, d=None, where="rheology block"):
     """`text` (a filled muI rheology block) with its material entries replaced by the
     calibration of `material`; d [m] overrides the calibration's parcel diameter (the
@@ -61,6 +96,12 @@ def block(text, material, d=None, where="rheology block"):
     values.update(d=f["d"] if d is None else d, rhoP=f["rho_p"])
     if not re.search(r"^\s*type\s+muI\s*;", text, re.M):
         raise CaseError(f"{where}: the calibration replaces a muI block ('type muI;' not found)")
+    if entry(text, "etaMin", where) is None:        # the literature floor, before d changes (module docstring)
+        d_lit, rho_lit = entry(text, "d", where), entry(text, "rhoP", where)
+        if d_lit is None or rho_lit is None:
+            raise CaseError(f"{where}: no entry '{'d' if d_lit is None else 'rhoP'}' (the viscosity floor needs it)")
+        text = set_entry(text, "etaMin", rho_lit * d_lit * math.sqrt(G * d_lit),
+                         f"the literature block's floor rho_p d sqrt(g d), d = {d_lit:g} m (kept)")
     for key, value in values.items():
         note = "DEM parcel diameter of the calibration" if key == "d" and d is None else (
             "set by the run (the calibrated law at this parcel size)" if key == "d" else f"DEM calibration, {f['source']}")

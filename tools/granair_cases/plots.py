@@ -80,3 +80,20 @@ def case_fields(path, title, case, times, rows, xlim, ylim):
             for field, label, cmap, lim in rows]
     by_t = [r for r in by_t if r[3]]
     return field_panels(path, title, cells, by_t, xlim, ylim) if by_t else None
+
+
+def mesh_study(ax, n, w, g, label, across):
+    """W against 1/N of a mesh study on ax: the runs (N = n, W = w, labelled), and for a
+    monotonic gc.gci result g (its finest mesh first in g's inputs: n_fine = max(n)) the
+    Richardson extrapolation at 1/N = 0 and the GCI_fine bar; across: what N counts."""
+    ax.plot([1 / x for x in n], w, "o-", label=label)
+    if g["convergence"] == "monotonic":
+        fine = max(range(len(n)), key=lambda i: n[i])
+        ax.plot([0], [g["extrapolated"]], "k*", ms=10, label="Richardson extrapolation (order %.2f)" % g["order"])
+        ax.errorbar([1 / n[fine]], [w[fine]], yerr=[g["gci_fine"] * w[fine]], fmt="none", ecolor="k", capsize=4,
+                    label="GCI_fine %.2f %%" % (100 * g["gci_fine"]))
+    for x, y in zip(n, w):
+        ax.annotate("N = %d" % x, (1 / x, y), textcoords="offset points", xytext=(5, 5), fontsize=8)
+    ax.set(xlabel=f"1/N (N cells across {across})", ylabel="steady mass flow W [kg/s]")
+    ax.set_xlim(left=-0.005)
+    ax.grid(alpha=0.3)

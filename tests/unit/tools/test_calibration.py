@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """gc.calibration (tools/granair_cases/calibration.py): the material entries of a
 hand-made muI block are replaced by the committed calibration
-(cases/rheology-calibration/results/calibration.json), the numerics kept, d
-overridden on request; a block without an entry, a non-muI block and an
+(cases/rheology-calibration/results/calibration.json), the numerics kept (the
+viscosity floor the literature block's, written explicitly), d overridden on
+request; a block without an entry, a non-muI block and an
 unknown material stop with the file and the key named."""
 import json
 import sys
@@ -42,6 +43,14 @@ for key, name in calibration.KEYS.items():
 for key, want in (("d", fit["d_parcel_m"]), ("rhoP", fit["rho_p"]), ("etaMax", 1e5)):
     if abs(entry(out, key) - want) > 1e-5 * want:
         failures.append(f"{key}: {entry(out, key)} vs {want}")
+# the floor stays the literature block's (rho_p d sqrt(g d) of its d), not the parcel's
+if abs(entry(out, "etaMin") - 1500 * 660e-6 * (9.81 * 660e-6) ** 0.5) > 1e-5 * 0.080:
+    failures.append(f"etaMin: {entry(out, 'etaMin')} vs the literature floor 0.0802")
+if entry(calibration.block(LITERATURE.replace("    etaMax", "    etaMin      0.5;\n    etaMax"), "mcc-hopper"),
+         "etaMin") != 0.5:
+    failures.append("an explicit etaMin of the block should stay")
+if entry(calibration.set_entry(out, "etaMin", 0.01, "test"), "etaMin") != 0.01:
+    failures.append("set_entry did not replace etaMin")
 if "literature header" in out or "barkerGray2017" not in out:
     failures.append("the literature header comment should go, the numerics stay")
 if abs(entry(calibration.block(LITERATURE, "mcc-hopper", d=2e-3), "d") - 2e-3) > 1e-12:
