@@ -248,11 +248,11 @@ def post_run(d, res, name):
     s, t, air = r["series"], r["t"], v["AIR"] == "on"
     fill = fill_stats(os.path.join(d, "..", "fill"), v)
     zero = np.zeros(len(t))
+    # the bed height holding what is still above the orifice at the fill's bulk density
+    level = P.fill_level(2 * v["B"], fill["mass_full_depth_kg"] - s["discharged_kg"], fill["rho_b"])
     gc.series.write_csv(os.path.join(res, f"{name}.csv"), [("t", t), ("mass_flow_kg_s", s["mass_flow_kg_s"])] + [
         (k, s.get(k, zero)) for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")] + [
-        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"]),
-        # the bed height holding what is still above the orifice at the fill's bulk density
-        ("fill_level_m", P.fill_level(2 * v["B"], fill["mass_full_depth_kg"] - s["discharged_kg"], fill["rho_b"]))])
+        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"]), ("fill_level_m", level)])
     t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
     out = dict(name=name, b_mm=v["B_MM"], air=air, s=v["S"], size=v["SIZE"], np=v["NP"], t_end=float(t[-1]),
                steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1),
@@ -276,16 +276,32 @@ def post_run(d, res, name):
     out["cg"], out["cg_png"] = cg.run(d, v, res, name, out["field_times"])
     for c in out["cg"]:     # the discharge counter's rate (0.1 s window) next to the CG flux through the orifice
         c["orifice"]["series_mass_flow_kg_s"] = float(np.interp(c["t"], t, s["mass_flow_kg_s"]))
-    out["png"] = gc.plots.case_fields(
-        os.path.join(res, f"{name}_fields.png"), f"{name}: b = {v['B_MM']} mm, {'with air' if air else 'DEM only'}",
-        d, out["field_times"], [("voidfraction", "void fraction", "viridis", (0.35, 1.0))]
-        + ([("p", "air pressure - ambient [Pa]", "RdBu_r", None)] if air else []),
-        (-P.WIDTH / 2 * 1e3, P.WIDTH / 2 * 1e3), (-P.BOX_BELOW * 1e3, min(v["HT"], v["FILL_HEIGHT"] + 0.03) * 1e3))
+    levels = {x: float(np.interp(x, t, level)) for x in out["field_times"]}      # the fill level at each field time
+    out["field_fill_levels_m"] = [levels[x] for x in out["field_times"]]
+    kind = f"b = {v['B_MM']} mm, {'with air' if air else 'DEM only'}"
+    rows = [("voidfraction", "void fraction", "viridis", (0.35, 1.0))] + (
+        [("p", "air pressure - ambient [Pa]", "RdBu_r", None)] if air else [])
+    lims = (-P.WIDTH / 2 * 1e3, P.WIDTH / 2 * 1e3), (-P.BOX_BELOW * 1e3, min(v["HT"], v["FILL_HEIGHT"] + 0.03) * 1e3)
+    notes = {x: f"fill level {1e3 * h:.0f} mm" for x, h in levels.items()}
+    out["png"] = gc.plots.case_fields(os.path.join(res, f"{name}_fields.png"), f"{name}: {kind}", d,
+                                      out["field_times"], rows, *lims, notes=notes)
+    three = fill_level_times(levels)
+    if three:       # the same fields at the field times nearest 3/4, 1/2 and 1/4 of the initial fill level
+        gc.plots.case_fields(os.path.join(res, f"{name}_fill_levels.png"), f"{name}: {kind}, at three fill levels",
+                             d, three, rows, *lims, notes=notes)
     dst = os.path.join(res, "vtk", name, "openfoam")
     shutil.rmtree(dst, ignore_errors=True)
     if os.path.isdir(os.path.join(d, "VTK")):
         shutil.copytree(os.path.join(d, "VTK"), dst)
     return out
+
+
+def fill_level_times(levels):
+    """The field times whose fill levels ({t: level}) are nearest 3/4, 1/2 and 1/4 of
+    the first one; [] unless three distinct times qualify (a run with few field times)."""
+    h0 = levels[min(levels)] if levels else 0.0
+    picks = sorted({min(levels, key=lambda x: abs(levels[x] - f * h0)) for f in (0.75, 0.5, 0.25)}) if h0 > 0 else []
+    return picks if len(picks) == 3 else []
 
 
 def crewdson(w0, dpdz, rho_b):

@@ -25,11 +25,11 @@ def save(fig, path, dpi=120):
     return path
 
 
-def field_panels(path, title, cells, rows, xlim, ylim):
+def field_panels(path, title, cells, rows, xlim, ylim, notes=None):
     """One row of panels per field, one panel per time, each cell drawn as its
     polygon (cells: [(x, z) corners] in the unit of xlim/ylim). rows: [(label,
     cmap, (vmin, vmax) or None, {t: values})]; None limits give a symmetric
-    range (a pressure)."""
+    range (a pressure). notes: {t: text} added under a panel's time (e.g. the fill level)."""
     from matplotlib.collections import PolyCollection
     plt = pyplot()
     times = sorted({t for _, _, _, by_t in rows for t in by_t})
@@ -44,7 +44,7 @@ def field_panels(path, title, cells, rows, xlim, ylim):
         for j, t in enumerate(times):
             ax = axes[i][j]
             ax.set(xlim=xlim, ylim=ylim, aspect="equal", xlabel="x [mm]")
-            ax.set_title(f"t = {t:g} s", fontsize=9)
+            ax.set_title(f"t = {t:g} s" + (f"\n{notes[t]}" if notes and t in notes else ""), fontsize=9)
             ax.tick_params(labelsize=7)
             if t in by_t:
                 pc = PolyCollection(cells, array=by_t[t], cmap=cmap, edgecolors="face", linewidths=0.2)
@@ -55,7 +55,7 @@ def field_panels(path, title, cells, rows, xlim, ylim):
     return save(fig, path, dpi=110)
 
 
-def case_fields(path, title, case, times, rows, xlim, ylim):
+def case_fields(path, title, case, times, rows, xlim, ylim, notes=None):
     """field_panels of a plane OpenFOAM case (foam.plane_cells: an ASCII mesh, one
     cell thick): rows [(field, label, cmap, limits)] at the times given that have
     the field, lengths in mm. Returns the picture's path, or None without any field."""
@@ -64,4 +64,4 @@ def case_fields(path, title, case, times, rows, xlim, ylim):
                                 for p in [d and os.path.join(d, field)] if p and os.path.exists(p)})
             for field, label, cmap, lim in rows]
     by_t = [r for r in by_t if r[3]]
-    return field_panels(path, title, cells, by_t, xlim, ylim) if by_t else None
+    return field_panels(path, title, cells, by_t, xlim, ylim, notes) if by_t else None
