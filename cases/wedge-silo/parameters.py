@@ -37,6 +37,11 @@ WHOLE_T_MAX = 15.0       # [s]; the study-size b = 10 mm silo empties in ~4 s wi
 WHOLE_CHUNK = 1.0        # [s] per granairFoam call (rounded up to whole field intervals)
 EMPTY_FRACTION = 0.005   # "empty": at most this share of the parcels is left in the DEM
 STALL_TIME = 0.25        # "stopped": nothing crossed the orifice for this long [s]
+# Rolling resistance (study.py --rolling MU_R, issue 21; off by default): the parcels
+# are smooth spheres, lactose grains are irregular. LIGGGHTS 3.8 (Debian) models
+# that need only mu_r: epsd2 (elastic-plastic spring, Iwashita & Oda 1998) and cdt
+# (constant torque); epsd needs a damping coefficient too, epsd3 a stiffness factor.
+ROLLING_MODELS = ("epsd2", "cdt")
 
 # A size fixes the reductions per orifice width b [mm]: b_over_d, the orifice
 # width in mean parcel diameters (sets the coarse-graining factor

@@ -6,6 +6,7 @@ tables, field pictures and VTK files, the study plots and the checks.
 
     study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR] [--jobs 2] [--np 1]
              [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
+             [--rolling MU_R [--rolling-model epsd2|cdt]]
              [--fill-height H] [--cg-every T] [--whole [--chunk T]] [--stage all|fill|runs|post] [--setup-only] [--check]
 
 Fills and runs are independent serial jobs, --jobs of them at a time (on a
@@ -71,6 +72,9 @@ def numbers(a, b_mm, air):
     fill = a.fill_height if a.fill_height is not None else pb["fill"]
     chunk = max(1, round(0.02 / dem_dt))
     cg_every = every if a.cg_every is None else a.cg_every     # CG dumps [s]: by default at the field times
+    if not (a.rolling >= 0.0 and math.isfinite(a.rolling)):
+        raise gc.CaseError(f"--rolling {a.rolling}: expected a rolling friction coefficient >= 0 (0: none)")
+    mu_r = f"{a.rolling:.6g}"
     return dict(gc.template.constants(P), SIZE=a.size, B_MM=b_mm, B=b / 2, W=P.WIDTH / 2, HH=hh,
                 HT=hh + P.SHAFT_HEIGHT, THETA=theta, SLICE=slice_, SLICE_MM=slice_ * 1e3, NX=max(4, round(b / h)),
                 NX_SIDE=max(2, round((P.WIDTH - b) / 2 / (2 * h))), NZ_BELOW=max(4, round(P.BOX_BELOW / h)),
@@ -81,7 +85,10 @@ def numbers(a, b_mm, air):
                 AIR="on" if air else "off", KERNEL_WIDTH=h, OUTLET_X=b / 2 + 1e-6, ABOVE_Z=z_above,
                 ABOVE_X=b / 2 + z_above * math.tan(theta) + 1e-6, ABOVE_Z_LO=z_above - 1e-4,
                 ABOVE_Z_HI=z_above + 1e-4, SKIN=0.3 * d, YOUNGS=youngs, MU_W=P.WALL_FRICTION,
-                COHESION=a.cohesion, K_COH=k_coh, R_TYPE=s * P.D_MEAN_PSD / 2, CHUNK=chunk,
+                COHESION=a.cohesion, K_COH=k_coh, ROLLING_MU=a.rolling,
+                ROLLING=f" rolling_friction {a.rolling_model}" if a.rolling else "",
+                ROLLING_FIX=f"fix m6 all property/global coefficientRollingFriction peratomtypepair 2 {mu_r} {mu_r} {mu_r} {mu_r}"
+                if a.rolling else "# (none: --rolling 0)", R_TYPE=s * P.D_MEAN_PSD / 2, CHUNK=chunk,
                 SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
                 if youngs < 5e6 else "# (E >= 5e6 Pa: no soft_particles needed)",
                 N_MIN=math.ceil(P.SETTLE_MIN / (chunk * dem_dt)), N_MAX=math.ceil(P.SETTLE_MAX / (chunk * dem_dt)),
@@ -237,15 +244,16 @@ def post_run(d, res, name):
     s, t, air = r["series"], r["t"], v["AIR"] == "on"
     fill = fill_stats(os.path.join(d, "..", "fill"), v)
     zero = np.zeros(len(t))
+    # the bed height holding what is still above the orifice at the fill's bulk density
+    level = P.fill_level(2 * v["B"], fill["mass_full_depth_kg"] - s["discharged_kg"], fill["rho_b"])
     gc.series.write_csv(os.path.join(res, f"{name}.csv"), [("t", t), ("mass_flow_kg_s", s["mass_flow_kg_s"])] + [
         (k, s.get(k, zero)) for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")] + [
-        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"]),
-        # the bed height holding what is still above the orifice at the fill's bulk density
-        ("fill_level_m", P.fill_level(2 * v["B"], fill["mass_full_depth_kg"] - s["discharged_kg"], fill["rho_b"]))])
+        ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"]), ("fill_level_m", level)])
     t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
     out = dict(name=name, b_mm=v["B_MM"], air=air, s=v["S"], size=v["SIZE"], np=v["NP"], t_end=float(t[-1]),
                steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1),
-               balance=r["balance"], whole=bool(chunks), field_times=[x for x in field_times(v) if gc.foam.time_dir(d, x)])
+               balance=r["balance"], whole=bool(chunks), rolling=f", rolling friction {v['ROLLING'].split()[-1]} mu_r = "
+               f"{v['ROLLING_MU']:g}" if v.get("ROLLING") else "", field_times=[x for x in field_times(v) if gc.foam.time_dir(d, x)])
     if air:
         for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m"):
             out[k] = gc.series.time_mean(t, s[k], t0, t1)
@@ -257,16 +265,32 @@ def post_run(d, res, name):
     out["cg"], out["cg_png"] = cg.run(d, v, res, name, out["field_times"])
     for c in out["cg"]:     # the discharge counter's rate (0.1 s window) next to the CG flux through the orifice
         c["orifice"]["series_mass_flow_kg_s"] = float(np.interp(c["t"], t, s["mass_flow_kg_s"]))
-    out["png"] = gc.plots.case_fields(
-        os.path.join(res, f"{name}_fields.png"), f"{name}: b = {v['B_MM']} mm, {'with air' if air else 'DEM only'}",
-        d, out["field_times"], [("voidfraction", "void fraction", "viridis", (0.35, 1.0))]
-        + ([("p", "air pressure - ambient [Pa]", "RdBu_r", None)] if air else []),
-        (-P.WIDTH / 2 * 1e3, P.WIDTH / 2 * 1e3), (-P.BOX_BELOW * 1e3, min(v["HT"], v["FILL_HEIGHT"] + 0.03) * 1e3))
+    levels = {x: float(np.interp(x, t, level)) for x in out["field_times"]}      # the fill level at each field time
+    out["field_fill_levels_m"] = [levels[x] for x in out["field_times"]]
+    kind = f"b = {v['B_MM']} mm, {'with air' if air else 'DEM only'}"
+    rows = [("voidfraction", "void fraction", "viridis", (0.35, 1.0))] + (
+        [("p", "air pressure - ambient [Pa]", "RdBu_r", None)] if air else [])
+    lims = (-P.WIDTH / 2 * 1e3, P.WIDTH / 2 * 1e3), (-P.BOX_BELOW * 1e3, min(v["HT"], v["FILL_HEIGHT"] + 0.03) * 1e3)
+    notes = {x: f"fill level {1e3 * h:.0f} mm" for x, h in levels.items()}
+    out["png"] = gc.plots.case_fields(os.path.join(res, f"{name}_fields.png"), f"{name}: {kind}", d,
+                                      out["field_times"], rows, *lims, notes=notes)
+    three = fill_level_times(levels)
+    if three:       # the same fields at the field times nearest 3/4, 1/2 and 1/4 of the initial fill level
+        gc.plots.case_fields(os.path.join(res, f"{name}_fill_levels.png"), f"{name}: {kind}, at three fill levels",
+                             d, three, rows, *lims, notes=notes)
     dst = os.path.join(res, "vtk", name, "openfoam")
     shutil.rmtree(dst, ignore_errors=True)
     if os.path.isdir(os.path.join(d, "VTK")):
         shutil.copytree(os.path.join(d, "VTK"), dst)
     return out
+
+
+def fill_level_times(levels):
+    """The field times whose fill levels ({t: level}) are nearest 3/4, 1/2 and 1/4 of
+    the first one; [] unless three distinct times qualify (a run with few field times)."""
+    h0 = levels[min(levels)] if levels else 0.0
+    picks = sorted({min(levels, key=lambda x: abs(levels[x] - f * h0)) for f in (0.75, 0.5, 0.25)}) if h0 > 0 else []
+    return picks if len(picks) == 3 else []
 
 
 def crewdson(w0, dpdz, rho_b):
@@ -291,7 +315,7 @@ def post_study(a, work, res, timings, wall):
         gc.levels.write(os.path.join(res, f"{x['name']}.level.json"), case="wedge-silo",
                         level="cg-dem-cfd" if x["air"] else "cg-dem",
                         model=f"DEM{'-CFD' if x['air'] else ''}, s = {x['s']:.3g}, {x['size']} size"
-                        + (", whole discharge" if x["whole"] else ""), b_mm=x["b_mm"],
+                        + (", whole discharge" if x["whole"] else "") + x["rolling"], b_mm=x["b_mm"],
                         air=x["air"], steady_mass_flow_kg_s=x["W_kg_s"], steady_window_s=[x["steady_from_s"], x["steady_to_s"]],
                         outlet_dpdz_Pa_m=x.get("outlet_dpdz_Pa_m"), wall_time_s=x["balance"]["wall_time_s"], cores=x["np"],
                         timeseries=f"{x['name']}.csv", parcels=fills[x["b_mm"]]["n_parcels"], coarse_graining_factor=x["s"])
@@ -417,7 +441,8 @@ def write_summary(runs, fills, timings, res, wall, a):
                  **{k: f"{x[k]:.5g}" for k in ("air_in_top_m3", "air_out_orifice_m3", "pore_growth_m3", "powder_out_m3")
                     if k in x}) for x in runs]
     gc.series.write_rows(os.path.join(res, "summary.csv"), rows)
-    lines = [f"wedge-silo study, size {a.size} (total wall time {wall:.0f} s)", ""]
+    rolling = f", rolling friction {a.rolling_model} mu_r = {a.rolling:g}" if a.rolling else ""
+    lines = [f"wedge-silo study, size {a.size}{rolling} (total wall time {wall:.0f} s)", ""]
     for b, f in sorted(fills.items()):
         v, bev = f["case"], f["beverloo_kg_s"] + f["beverloo_parcel_kg_s"]
         lines += [f"b = {b} mm: s = {v['S']:.3g}, parcel d = {v['D_PARCEL'] * 1e3:.3g} mm (b/d = {b * 1e-3 / v['D_PARCEL']:.3g}), "
@@ -480,6 +505,10 @@ def main():
     ap.add_argument("--write-interval", type=float, default=None, help="field interval [s] (demo 0.25, study 1)")
     ap.add_argument("--youngs", type=float, default=None, help="Young's modulus used [Pa]")
     ap.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
+    ap.add_argument("--rolling", type=float, default=0.0, metavar="MU_R",
+                    help="rolling friction coefficient, parcels and walls (default 0: none; README, Rolling resistance)")
+    ap.add_argument("--rolling-model", default=P.ROLLING_MODELS[0], choices=P.ROLLING_MODELS,
+                    help="LIGGGHTS rolling friction model (default %(default)s)")
     ap.add_argument("--fill-height", type=float, default=None, help="settled fill height [m]")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--cg-every", type=float, default=None,

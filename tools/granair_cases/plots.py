@@ -43,11 +43,11 @@ def grid_map(ax, x, z, values, cmap, lim, scale=1e3):
     return ax.imshow(values, origin="lower", extent=ext, cmap=cmap, vmin=lim[0], vmax=lim[1], interpolation="nearest")
 
 
-def field_panels(path, title, cells, rows, xlim, ylim):
+def field_panels(path, title, cells, rows, xlim, ylim, notes=None):
     """One row of panels per field, one panel per time, each cell drawn as its
     polygon (cells: [(x, z) corners] in the unit of xlim/ylim). rows: [(label,
     cmap, (vmin, vmax) or None, {t: values})]; None limits give a symmetric
-    range (a pressure)."""
+    range (a pressure). notes: {t: text} added under a panel's time (e.g. the fill level)."""
     plt = pyplot()
     times = sorted({t for _, _, _, by_t in rows for t in by_t})
     aspect = (ylim[1] - ylim[0]) / (xlim[1] - xlim[0])
@@ -61,7 +61,7 @@ def field_panels(path, title, cells, rows, xlim, ylim):
         for j, t in enumerate(times):
             ax = axes[i][j]
             ax.set(xlim=xlim, ylim=ylim, aspect="equal", xlabel="x [mm]")
-            ax.set_title(f"t = {t:g} s", fontsize=9)
+            ax.set_title(f"t = {t:g} s" + (f"\n{notes[t]}" if notes and t in notes else ""), fontsize=9)
             ax.tick_params(labelsize=7)
             if t in by_t:
                 pc = cell_map(ax, cells, by_t[t], cmap, lim)
@@ -70,7 +70,7 @@ def field_panels(path, title, cells, rows, xlim, ylim):
     return save(fig, path, dpi=110)
 
 
-def case_fields(path, title, case, times, rows, xlim, ylim):
+def case_fields(path, title, case, times, rows, xlim, ylim, notes=None):
     """field_panels of a plane OpenFOAM case (foam.plane_cells: an ASCII mesh, one
     cell thick): rows [(field, label, cmap, limits)] at the times given that have
     the field, lengths in mm. Returns the picture's path, or None without any field."""
@@ -79,7 +79,7 @@ def case_fields(path, title, case, times, rows, xlim, ylim):
                                 for p in [d and os.path.join(d, field)] if p and os.path.exists(p)})
             for field, label, cmap, lim in rows]
     by_t = [r for r in by_t if r[3]]
-    return field_panels(path, title, cells, by_t, xlim, ylim) if by_t else None
+    return field_panels(path, title, cells, by_t, xlim, ylim, notes) if by_t else None
 
 
 def mesh_study(ax, n, w, g, label, across):
