@@ -523,26 +523,17 @@ void CoupledRun::run()
             k == nSteps_ || stopSignal_ || emptied_
         );
     }
-    if (stopSignal_)
+    if (stopSignal_ || emptied_)
     {
-        writeStopPoint();
-    }
-    else if (emptied_ && !runTime_.writeTime())
-    {
-        // The fields of the last time, but no restart point: there is
+        // An emptied domain gets the fields but no restart point: there is
         // nothing left to continue (and LIGGGHTS could not read zero atoms).
-        StageTimers::Scope s(timers_, StageTimers::Output);
-        if (!air_)
-        {
-            mapVoidFraction();
-        }
-        runTime_.writeNow();
+        writeStopPoint(!emptied_);
     }
     resources_.stopLoop();
 }
 
 
-void CoupledRun::writeStopPoint()
+void CoupledRun::writeStopPoint(bool restartPoint)
 {
     StageTimers::Scope s(timers_, StageTimers::Output);
     if (!runTime_.writeTime())
@@ -552,7 +543,10 @@ void CoupledRun::writeStopPoint()
             mapVoidFraction();
         }
         runTime_.writeNow();
-        writeRestartPoint();
+        if (restartPoint)
+        {
+            writeRestartPoint();
+        }
     }
 }
 

@@ -12,6 +12,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 work=$1
 . "$here/../../tools/case-lib.sh"
+. "$here/end_checks.sh"
 rm -rf "$work"; mkdir -p "$work"
 fails=0
 
@@ -30,20 +31,9 @@ for np in 1 2; do
   log=$d/log/run.log ok=1
   tail -n 5 "$log"
   [ "$rc" -eq 0 ] || { echo "  np$np: exit $rc, expected 0"; ok=0; }
-  line=$(grep "granairFoam: no particles left in the DEM domain at t = " "$log" || true)
-  [ -n "$line" ] || { echo "  np$np: no 'no particles left' message"; ok=0; }
-  if [ -n "$line" ]; then
-    t=$(echo "$line" | sed 's/.* at t = \([^ ]*\) s, after coupling step \([0-9]*\) of.*/\1/')
-    k=$(echo "$line" | sed 's/.* at t = \([^ ]*\) s, after coupling step \([0-9]*\) of.*/\2/')
-    rows=$(($(wc -l < "$d/postProcessing/timeSeries.csv") - 1))
-    last=$(tail -n 1 "$d/postProcessing/timeSeries.csv" | cut -d, -f1)
-    [ "$rows" -eq "$k" ] || { echo "  np$np: $rows time-series rows for $k steps"; ok=0; }
-    [ "$k" -lt 1000 ] || { echo "  np$np: ran all $k steps: the particle never left"; ok=0; }
-    "$GRANAIR_PYTHON" -c "import sys; sys.exit(abs(float('$last') - float('$t')) > 1e-9)" \
-      || { echo "  np$np: last row t = $last, stopped at t = $t"; ok=0; }
-    { [ -f "$d/$t/U" ] || [ -f "$d/processor0/$t/U" ]; } || { echo "  np$np: no fields at t = $t"; ok=0; }
-    echo "  np$np: no particles left at t = $t after $k steps, $rows rows, exit $rc"
-  fi
+  granair_check_end "np$np" "$d" "granairFoam: no particles left in the DEM domain" || ok=0
+  [ -z "$END_K" ] || [ "$END_K" -lt 1000 ] || { echo "  np$np: ran all $END_K steps: the particle never left"; ok=0; }
+  grep -q "The outputs are complete up to that time" "$log" || { echo "  np$np: no 'outputs complete' line"; ok=0; }
   [ $ok -eq 1 ] || fails=$((fails+1))
 done
 [ $fails -eq 0 ] && echo "empty_domain: every run ended cleanly" || { echo "empty_domain: $fails run(s) wrong"; exit 1; }
