@@ -22,10 +22,7 @@ def all(out, by_angle, run_root):
     force_chains(plt, out, angles, by_angle, run_root)
 
 
-def _err(ax, angles, means, key, label, **kw):
-    y = np.array([m[key] for m in means])
-    e = np.array([m[key + "_sd"] for m in means])
-    ax.errorbar(angles, y, yerr=np.where(np.isfinite(e), e, 0.0), capsize=3, marker="o", label=label, **kw)
+_err = gc.plots.errorbars
 
 
 def mass_flow(plt, out, angles, means):
@@ -134,12 +131,10 @@ def layers(plt, out, angles, by_angle, run_root):
         layer = {int(i): int((z - h) // P.LAYER) for i, z in zip(fill["id"], fill["z"])}
         R, top = P.D_SILO / 2, max(fill["z"]) + 0.03
         ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
-        fig.canvas.draw()
-        per_m = ax.get_window_extent().width * 72 / fig.dpi / (2.1 * R)      # points per metre
         sel = np.abs(final["y"]) < d
         col = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
-        ax.scatter(final["x"][sel], final["z"][sel], s=(0.9 * 2 * final["radius"][sel] * per_m) ** 2,
-                   c=np.where(col, "tab:orange", "tab:blue"), linewidths=0)
+        gc.plots.grains(fig, ax, final["x"][sel], final["z"][sel], 2 * final["radius"][sel],
+                        np.where(col, "tab:orange", "tab:blue"))
         ro = P.D_OUTLET / 2
         ax.plot([-ro, -R, -R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
         ax.plot([ro, R, R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
@@ -158,7 +153,6 @@ def force_chains(plt, out, angles, by_angle, run_root):
     (contact midpoints), at rest and at the end of the discharge: a line from
     centre to centre for every contact stronger than the mean, its width and
     colour the force over the mean force."""
-    from matplotlib.collections import LineCollection
     found = []
     for a in angles:
         post = os.path.join(run_root, f"a{a}-s1", "post")
@@ -174,18 +168,8 @@ def force_chains(plt, out, angles, by_angle, run_root):
         dt = by_angle[a][1][0]["dt_s"]
         for i, path in enumerate(paths):
             (step, c), = gc.dem.read_dumps(path)[:1]
-            xi = np.column_stack([c[f"c_pairs[{k}]"] for k in (1, 2, 3)])
-            xj = np.column_stack([c[f"c_pairs[{k}]"] for k in (4, 5, 6)])
-            f = np.linalg.norm(np.column_stack([c[f"c_pairs[{k}]"] for k in (10, 11, 12)]), axis=1)
-            mean = float(f.mean()) if len(f) else 1.0
-            sel = (np.abs(0.5 * (xi[:, 1] + xj[:, 1])) < d) & (f > mean)
-            order = np.argsort(f[sel])
-            segs = np.stack([xi[sel][:, [0, 2]], xj[sel][:, [0, 2]]], axis=1)[order]
-            lc = LineCollection(segs, linewidths=0.4 * f[sel][order] / mean, cmap="inferno_r",
-                                norm=plt.Normalize(1, 6))
-            lc.set_array(f[sel][order] / mean)
             ax = axes[i][j]
-            ax.add_collection(lc)
+            lc, mean = gc.plots.force_chains(ax, c, d)
             h = P.hopper_height(a)
             top = by_angle[a][0]["fill_surface_m"] + 0.02
             ax.plot([-P.D_OUTLET / 2, -R, -R], [0, h, top], "k-", lw=0.8)

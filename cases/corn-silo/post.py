@@ -1,18 +1,19 @@
 """Post-processing of the corn silo (study.py): one run, one angle (mean +- SD
-of its runs), the study (tables against the angle). Plots: figures.py."""
+of its runs), the study (tables against the angle). Plots: figures.py. The
+readers, the wall rings, Janssen's slice balance and the strain by hull and by
+CG are the package's (gc.dem, gc.wall_rings, gc.strain)."""
 import glob
 import json
 import math
 import os
+import shutil
 
 import numpy as np
 
 import granair_cases as gc
 import figures
+import geometry
 import parameters as P
-import cg_strain
-import strain
-import walls
 
 COLUMNS = ("step", "atoms", "in_silo", "below_outlet", "discharged", "removed", "discharged_kg", "removed_kg")
 # the run scalars averaged over an angle's runs (mean, SD) and put in summary.csv
@@ -33,24 +34,7 @@ SCALARS = ("steady_mass_flow_kg_s", "bulk_density_kg_m3", "fill_surface_m",
 
 def read_flow(paths):
     """The flow_*.txt files of a run's chunks, in order, as {column: array} (one row per step)."""
-    rows = {}
-    for path in paths:
-        with open(path) as fh:
-            for line in fh:
-                parts = line.split()
-                if len(parts) == len(COLUMNS) and parts[0].isdigit():
-                    rows[int(parts[0])] = [float(x) for x in parts]
-    data = np.array([rows[s] for s in sorted(rows)]).reshape(-1, len(COLUMNS))
-    return {c: data[:, i] for i, c in enumerate(COLUMNS)}
-
-
-def cv_snapshots(post):
-    """The grains around the control volume at every CV_EVERY, all chunks, one per step."""
-    snaps = {}
-    for path in sorted(glob.glob(os.path.join(post, "cv_*.dump"))):
-        for step, cols in gc.dem.read_dumps(path):
-            snaps.setdefault(step, cols)
-    return sorted(snaps.items())
+    return gc.dem.read_print(paths, COLUMNS)
 
 
 def fill_state(fill, h):
@@ -116,22 +100,11 @@ def run(name, run_dir, v, state, out):
                         fmt="{:.6g}")
 
     # wall loads: the static fill, and every dump of the discharge
-    mesh = gc.dem.read_mesh_vtk(os.path.join(pdir, "walls_fill.vtk"))
-    rings = walls.Rings(mesh, angle)
+    rings = geometry.rings(gc.dem.read_mesh_vtk(os.path.join(pdir, "walls_fill.vtk")), angle)
     sn, ss, _ = gc.dem.wall_loads(os.path.join(pdir, "walls_fill.vtk"))
     files = [(s, p) for s, p in gc.dem.numbered(os.path.join(pdir, "walls_*.vtk")) if s > 0]
     steady = [(s, p) for s, p in files if s * dt >= min(P.STEADY_FROM, 0.4 * t[-1]) - 1e-9]
-    el_n = np.zeros_like(sn)
-    el_s = np.zeros_like(ss)
-    ring_n, ring_s = [], []
-    for s, p in files:
-        n_, s_, _ = gc.dem.wall_loads(p)
-        ring_n.append(rings.mean(n_))
-        ring_s.append(rings.mean(s_))
-        if (s, p) in steady:
-            el_n += n_ / len(steady)
-            el_s += s_ / len(steady)
-    ring_n, ring_s = np.array(ring_n), np.array(ring_s)
+    ring_n, ring_s, el_n, el_s = gc.wall_rings.loads(rings, files, steady)
     i0 = len(files) - len(steady)
     prof = dict(static_normal_Pa=rings.mean(sn), static_shear_Pa=rings.mean(ss),
                 discharge_normal_Pa=ring_n[i0:].mean(axis=0), discharge_shear_Pa=ring_s[i0:].mean(axis=0),
@@ -150,11 +123,11 @@ def run(name, run_dir, v, state, out):
     for wall, hop in (("hopper", True), ("shaft", False)):
         for kind, key in (("static", "static"), ("discharge", "discharge")):
             for q in ("normal", "shear"):
-                val, z, along = walls.maximum(rings, prof[f"{key}_{q}_Pa"], hop)
+                val, z, along = rings.maximum(prof[f"{key}_{q}_Pa"], rings.is_hopper == hop)
                 res[f"{wall}_{kind}_{q}_max_Pa"], res[f"{wall}_{kind}_{q}_max_z_m"] = val, z
                 res[f"{wall}_{kind}_{q}_max_along_m"] = along
         for q in ("normal", "shear"):
-            res[f"{wall}_peak_{q}_Pa"] = walls.maximum(rings, prof[f"peak_{q}_Pa"], hop)[0]
+            res[f"{wall}_peak_{q}_Pa"] = rings.maximum(prof[f"peak_{q}_Pa"], rings.is_hopper == hop)[0]
 
     # the shaft at rest against Janssen (K band), away from the free surface and the transition
     depth = surface - rings.z
@@ -162,19 +135,12 @@ def run(name, run_dir, v, state, out):
     lo, hi = (gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, kk, P.G)[1] for kk in P.K_JANSSEN)
     mid = gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, sum(P.K_JANSSEN) / 2, P.G)[1]
     meas = prof["static_normal_Pa"]
-    # Janssen's slice balance with the run's own wall shear: the vertical stress at a ring is the
-    # weight above it less the wall shear above it (taken as vertical), over the cross-section;
-    # K_eff = wall pressure / that stress, mu_mob = wall shear / wall pressure (the friction mobilised)
-    area = math.pi * P.D_SILO ** 2 / 4
-    ring_area = rings.weights
-    above_w = np.array([fill["mass"][fill["z"] > zk].sum() * P.G for zk in rings.z])
-    above_t = np.array([(prof["static_shear_Pa"] * ring_area)[~rings.is_hopper & (rings.z > zk)].sum() for zk in rings.z])
-    sigma_v = (above_w - above_t) / area
+    # Janssen's slice balance with the run's own wall shear (gc.wall_rings.slice_balance)
+    k_eff, mu_mob = gc.wall_rings.slice_balance(rings, meas, prof["static_shear_Pa"], shaft, ~rings.is_hopper,
+                                                fill["z"], fill["mass"], math.pi * P.D_SILO ** 2 / 4, P.G)
     res.update(janssen_rings=int(shaft.sum()),
                hydrostatic_mean_Pa=float((rho_b * P.G * depth)[shaft].mean()) if shaft.any() else math.nan,
-               K_eff=float(np.mean(prof["static_normal_Pa"][shaft] / sigma_v[shaft])) if shaft.any() else math.nan,
-               mu_mobilised=float(np.sum((prof["static_shear_Pa"] * ring_area)[shaft]) /
-                                  np.sum((prof["static_normal_Pa"] * ring_area)[shaft])) if shaft.any() else math.nan,
+               K_eff=k_eff, mu_mobilised=mu_mob,
                shaft_static_mean_Pa=float(meas[shaft].mean()) if shaft.any() else math.nan,
                janssen_lo_mean_Pa=float(lo[shaft].mean()) if shaft.any() else math.nan,
                janssen_hi_mean_Pa=float(hi[shaft].mean()) if shaft.any() else math.nan,
@@ -184,25 +150,19 @@ def run(name, run_dir, v, state, out):
     res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(P.janssen_depth(v["GRAINS"]), depth[sel][order], meas[sel][order],
                                                                 left=math.nan, right=math.nan))
 
-    # strain invariants over the outlet
-    rows = strain.series(cv_snapshots(pdir), P.CV_RADIUS, P.CV_HEIGHT)
+    # strain invariants over the outlet (gc.strain: the convex hull of the grains in the control volume)
+    rows = gc.strain.series(gc.dem.snapshots(os.path.join(pdir, "cv_*.dump")), P.CV_RADIUS, P.CV_HEIGHT)
     st = np.array(rows).reshape(-1, 13)
-    gc.series.write_csv(os.path.join(adir, f"s{k}_strain.csv"),
-                        [("t0", st[:, 0] * dt), ("t1", st[:, 1] * dt), ("grains", st[:, 2]), ("grains_lost", st[:, 3]),
-                         ("hull_volume_m3", st[:, 4]), ("I1", st[:, 5]), ("J2", st[:, 6]), ("eps_xx", st[:, 7]),
-                         ("eps_yy", st[:, 8]), ("eps_zz", st[:, 9]), ("eps_xy", st[:, 10]), ("eps_yz", st[:, 11]),
-                         ("eps_xz", st[:, 12])], fmt="{:.6g}")
+    gc.series.write_csv(os.path.join(adir, f"s{k}_strain.csv"), [("t0", st[:, 0] * dt), ("t1", st[:, 1] * dt)] +
+                        [(c, st[:, i]) for i, c in enumerate(gc.strain.COLUMNS[2:], 2)], fmt="{:.6g}")
     ss_ = st[st[:, 0] * dt >= res["steady_from_s"] - 1e-9]
-    res.update(strain_interval_s=P.CV_EVERY, strain_intervals=len(ss_),
-               I1_mean=float(ss_[:, 5].mean()) if len(ss_) else math.nan,
-               J2_mean=float(ss_[:, 6].mean()) if len(ss_) else math.nan,
-               I1_sd_time=float(ss_[:, 5].std()) if len(ss_) else math.nan,
-               J2_sd_time=float(ss_[:, 6].std()) if len(ss_) else math.nan,
-               cv_grains_mean=float(ss_[:, 2].mean()) if len(ss_) else math.nan,
-               cv_grains_lost=int(st[:, 3].sum()) if len(st) else 0)
+    stat = lambda col, f: float(f(ss_[:, col])) if len(ss_) else math.nan          # noqa: E731
+    res.update(strain_interval_s=P.CV_EVERY, strain_intervals=len(ss_), I1_mean=stat(5, np.mean),
+               J2_mean=stat(6, np.mean), I1_sd_time=stat(5, np.std), J2_sd_time=stat(6, np.std),
+               cv_grains_mean=stat(2, np.mean), cv_grains_lost=int(st[:, 3].sum()) if len(st) else 0)
     # the same from the CG velocity field (granairCG), beside the hull's of the time-mean strain
-    res["I1_of_mean"], res["J2_of_mean"] = cg_strain.hull_mean(rows, res["steady_from_s"], dt)
-    cg = cg_strain.run(run_dir, v, res["steady_from_s"], float(t[-1]))
+    res["I1_of_mean"], res["J2_of_mean"] = gc.strain.mean_invariants(rows, res["steady_from_s"], dt)
+    cg = cg_strain(run_dir, v, res["steady_from_s"], float(t[-1]))
     res.update(cg_I1=cg[0] if cg else math.nan, cg_J2=cg[1] if cg else math.nan, cg_points=cg[3] if cg else 0,
                cg_width_m=P.CG_WIDTH)
     res["descent_wall_over_core"], res["stagnant_mass_fraction"], res["dead_zone_wall_height_m"] = \
@@ -222,6 +182,24 @@ def run(name, run_dir, v, state, out):
           f"{res['shaft_static_over_janssen_mid']:.3g}, I1 {res['I1_mean']:.3g}, J2 {res['J2_mean']:.3g}, "
           f"{res['cpu_s']:.0f} s CPU", flush=True)
     return res
+
+
+def cg_strain(run_dir, v, t0, t1):
+    """(I1, J2, eps, grid points) of the strain per CV_EVERY from the CG velocity field
+    (README "Strain from the CG velocity field"): granairCG on the chunks' merged
+    cv_*.dump over [t0, t1], its strain rate averaged inside the control volume
+    (gc.strain.cg_mean); None (with a message) when granairCG is not built."""
+    if shutil.which("granairCG") is None:
+        print(f"corn-silo: granairCG not found (./granair build): no CG strain for {run_dir}", flush=True)
+        return None
+    post = os.path.join(run_dir, "post")
+    merged, n = gc.dem.merge_dumps(sorted(glob.glob(os.path.join(post, "cv_*.dump"))), os.path.join(post, "cv_all.dump"))
+    r, h, stem = P.CV_RADIUS, P.CV_HEIGHT, os.path.join(post, "cg_cv")
+    gc.cg.run(run_dir, stem, {"particles": merged, "dt": v["DT"], "coordinates": "XYZ", "kernel": "gauss",
+                              "width": P.CG_WIDTH, "spacing": P.CG_SPACING, "min": [-r, -r, "0"], "max": [r, r, h],
+                              "from": t0, "to": t1, "format": "csv"}, log="granairCG")
+    f = gc.series.read_csv(stem + ".csv")
+    return gc.strain.cg_mean(f, np.hypot(f["x"], f["y"]) < r, P.CV_EVERY, f"{stem}.csv")
 
 
 def angle(out, a, runs, seeds, size, run_root):
@@ -264,7 +242,7 @@ def angle(out, a, runs, seeds, size, run_root):
     if os.path.exists(first):
         mesh = gc.dem.read_mesh_vtk(first)
         els = [gc.series.read_csv(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_elements.csv")) for r in runs]
-        pts, tri = unique_points(mesh)
+        pts, tri = gc.dem.merge_points(mesh)
         for state in ("static", "discharge"):
             gc.dem.write_mesh_vtk(os.path.join(adir, f"wall_loads_{state}.vtk"), pts, tri,
                                   {f"{q}_Pa": np.mean([e[f"{state}_{q}_Pa"] for e in els], axis=0)
@@ -273,13 +251,6 @@ def angle(out, a, runs, seeds, size, run_root):
     with open(os.path.join(adir, "mean.json"), "w") as fh:
         json.dump(res, fh, indent=1, default=float)
     return res
-
-
-def unique_points(mesh):
-    """The mesh with the points LIGGGHTS repeats per triangle merged (a smaller VTK)."""
-    key = np.round(mesh["points"], 9)
-    uniq, inverse = np.unique(key, axis=0, return_inverse=True)
-    return uniq, inverse.reshape(-1)[np.array(mesh["cells"])]
 
 
 def study(out, done, angles, seeds, size, c):
@@ -305,7 +276,7 @@ def study(out, done, angles, seeds, size, c):
     rng = np.random.default_rng(7)
     x = rng.uniform(-P.CV_RADIUS, P.CV_RADIUS, (300, 3))
     grad = np.array([[0.010, 0.020, 0.0], [0.0, -0.030, 0.005], [0.001, 0.0, 0.020]])
-    eps = strain.hull_strain(x, x @ grad.T + 0.003)[0]
+    eps = gc.strain.hull_strain(x, x @ grad.T + 0.003)[0]
     c.near("convex-hull strain of a homogeneous deformation: largest error of a component", float(
         np.abs(eps - 0.5 * (grad + grad.T)).max()), 0.0, 1e-12, "the surface integral is exact for a linear "
         "displacement field (any translation drops out)")

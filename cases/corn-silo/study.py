@@ -16,7 +16,7 @@ that did not finish starts again). Jobs run --jobs at a time (one rank each).
 Each finished run is post-processed into OUT/a<angle>/ (post.py): mass flow,
 particle accounting, wall loads (static fill and discharge, per ring of wall
 elements, maxima and where), the strain invariants over the outlet
-(strain.py), the flow pattern and, for the first run, the coloured layers.
+(gc.strain), the flow pattern and, for the first run, the coloured layers.
 Then every angle with all its runs: mean +- SD (OUT/a<angle>/mean.json,
 level.json, the mean wall loads as VTK), and the study's tables and figures
 (OUT/summary.csv, summary.md, *.png). --post-only does only that, from the
@@ -90,7 +90,7 @@ def layers(grains, h, radii, seed, steps):
         rest = h + max(0.0, below * v / P.BULK_FRACTION - v_hopper) / area
         lo = rest + P.LAYER_GAP
         hi = lo + n * v / (P.INSERT_FRACTION * a_ins)
-        p = next_prime(p + 1)
+        p = gc.dem.next_prime(p + 1)
         lines += [f"region          layer{i + 1} cylinder z 0 0 {r_ins:.6g} {lo:.6g} {hi:.6g} units box",
                   f"fix ins{i + 1} all insert/pack seed {p} distributiontemplate pdd insert_every once overlapcheck yes "
                   f"all_in yes particles_in_region {n} region layer{i + 1}",
@@ -98,13 +98,6 @@ def layers(grains, h, radii, seed, steps):
                   f"unfix           ins{i + 1}"]
         below += n
     return "\n".join(lines), hi
-
-
-def next_prime(n):
-    """The smallest prime >= n (LIGGGHTS wants prime seeds)."""
-    while n < 2 or any(n % q == 0 for q in range(2, int(math.isqrt(n)) + 1)):
-        n += 1
-    return n
 
 
 def read_state(run):

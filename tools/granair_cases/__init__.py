@@ -12,7 +12,7 @@
     gci         Roache's grid convergence index of a result on three meshes
     levels      level.json, the contract of `./granair compare` (docs/fidelity-levels.md)
     checks      a case's --check: named assertions with tolerances and reasons
-    plots       matplotlib (Agg) helpers: figures, Beverloo bands, field panels
+    plots       matplotlib (Agg) helpers: figures, field panels, error bars, particles and force chains
     cli         the options every study takes (--out, --check, --np, --setup-only)
     calibration the DEM-calibrated mu(I) of a case material in place of a literature block
     cg          CG fields: granairCG run on a case's dumps, its CSV read back as grids, tensor invariants
@@ -20,7 +20,9 @@
     cg_grids    2-D CG fields (RZ, XZ) on their grid: the committed CSV, the density's integral (mass check)
     outlet      particles leaving through an outlet: counter records, window rates, bulk density, Beverloo fit
     fits        least-squares fits the studies share: phi(I) = a1 / (1 + a2 I), y = alpha f
-    stl_walls   flat STL walls in pieces: strips between openings, tiled planes
+    stl_walls   STL walls in pieces: strips between openings, tiled planes, surfaces of revolution, disks
+    strain      the strain of the particles in a control volume: by their convex hull, from a CG field
+    wall_rings  wall loads (LIGGGHTS mesh stress) per ring of elements, Janssen's slice balance
     field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
@@ -34,4 +36,4 @@ class CaseError(Exception):
 
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
-from . import cg_grids, outlet, fits, stl_walls, field_maps  # noqa: E402,F401
+from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings  # noqa: E402,F401

@@ -11,6 +11,10 @@
     wall_loads(path)                    its normal and shear stress and area per element (LIGGGHTS mesh stress)
     numbered(pattern)                   [(step, path)] of numbered outputs (walls_*.vtk), by step
     merge_dumps(paths, out)             the snapshots of a chunked run's dump files in one, each step once
+    snapshots(pattern)                  every snapshot of a chunked run's dump files: [(step, columns)], each step once
+    read_print(paths, columns)          the rows of a `fix print` file (a step first) of a chunked run, each step once
+    next_prime(n)                       the smallest prime >= n (LIGGGHTS' seeds)
+    merge_points(mesh)                  a `dump mesh/vtk` mesh with its repeated points merged
     write_mesh_vtk(path, ...)           triangles with per-element fields as legacy VTK (ParaView)
     discharge_balance(log)              the particle accounting granairFoam prints at the end
 """
@@ -177,6 +181,45 @@ def merge_dumps(paths, out):
         for step in sorted(seen):
             fh.write("\n".join(seen[step]) + "\n")
     return out, len(seen)
+
+
+def snapshots(pattern):
+    """Every snapshot of the dump files matching a glob pattern (the chunks of a run, in
+    name order), each step once (the first file's), by step: [(step, columns)]."""
+    snaps = {}
+    for path in sorted(glob.glob(pattern)):
+        for step, cols in read_dumps(path):
+            snaps.setdefault(step, cols)
+    return sorted(snaps.items())
+
+
+def read_print(paths, columns):
+    """The rows of `fix print` files (the chunks of a run, in order) whose first number is
+    a step and which have one number per column: {column: array}, one row per step (a
+    later file's row replaces an earlier one's), by step."""
+    rows = {}
+    for path in paths:
+        with open(path) as fh:
+            for line in fh:
+                parts = line.split()
+                if len(parts) == len(columns) and parts[0].isdigit():
+                    rows[int(parts[0])] = [float(x) for x in parts]
+    data = np.array([rows[s] for s in sorted(rows)]).reshape(-1, len(columns))
+    return {c: data[:, i] for i, c in enumerate(columns)}
+
+
+def next_prime(n):
+    """The smallest prime >= n (LIGGGHTS wants prime seeds)."""
+    while n < 2 or any(n % q == 0 for q in range(2, int(math.isqrt(n)) + 1)):
+        n += 1
+    return n
+
+
+def merge_points(mesh):
+    """(points, triangles) of a read_mesh_vtk mesh with the points LIGGGHTS repeats per
+    triangle merged (to 1 nm): a smaller VTK of the same surface."""
+    uniq, inverse = np.unique(np.round(mesh["points"], 9), axis=0, return_inverse=True)
+    return uniq, inverse.reshape(-1)[np.array(mesh["cells"])]
 
 
 def numbered(pattern):

@@ -5,6 +5,9 @@
     case_fields(path, title, case, times, rows, ...)     the same from a plane OpenFOAM case
     cell_map(ax, cells, values, cmap, lim)               one panel of cell polygons coloured by a field
     grid_map(ax, x, z, values, cmap, lim)                one panel of a grid field [i_z, i_x] (CG fields)
+    errorbars(ax, x, rows, key, label)                   mean +- SD of rows[key], rows[key + "_sd"] against x
+    grains(fig, ax, x, z, d, colours)                    particles of a slice as discs of their own size
+    lc, mean = force_chains(ax, pairs, half_width)       the contacts stronger than the mean in a slice
     save(fig, path)
 """
 import os
@@ -80,6 +83,44 @@ def case_fields(path, title, case, times, rows, xlim, ylim, notes=None):
             for field, label, cmap, lim in rows]
     by_t = [r for r in by_t if r[3]]
     return field_panels(path, title, cells, by_t, xlim, ylim, notes) if by_t else None
+
+
+def errorbars(ax, x, rows, key, label, **kw):
+    """Points rows[i][key] against x with error bars rows[i][key + "_sd"] (none where NaN: one run)."""
+    y = np.array([m[key] for m in rows])
+    e = np.array([m[key + "_sd"] for m in rows])
+    ax.errorbar(x, y, yerr=np.where(np.isfinite(e), e, 0.0), capsize=3, marker="o", label=label, **kw)
+
+
+def grains(fig, ax, x, z, diameter, colours, scale=0.9):
+    """Particles at (x, z) drawn as discs `scale` x their diameter [m] on the axes' own
+    scale (set the limits and the aspect first)."""
+    fig.canvas.draw()
+    xlim = ax.get_xlim()
+    per_m = ax.get_window_extent().width * 72 / fig.dpi / (xlim[1] - xlim[0])      # points per metre
+    ax.scatter(x, z, s=(scale * diameter * per_m) ** 2, c=colours, linewidths=0)
+
+
+def force_chains(ax, pairs, half_width, vmax=6.0):
+    """The contact network of one `compute pair/gran/local` snapshot (columns
+    c_pairs[1..3] and [4..6] the two centres, [10..12] the force) in the slice
+    |y| < half_width of the contact midpoints: a line from centre to centre (x, z)
+    for every contact stronger than the mean, its width and colour the force over
+    the mean (colours 1..vmax). Returns (the LineCollection, the mean force [N])."""
+    from matplotlib.collections import LineCollection
+    c = pairs
+    xi = np.column_stack([c[f"c_pairs[{k}]"] for k in (1, 2, 3)])
+    xj = np.column_stack([c[f"c_pairs[{k}]"] for k in (4, 5, 6)])
+    f = np.linalg.norm(np.column_stack([c[f"c_pairs[{k}]"] for k in (10, 11, 12)]), axis=1)
+    mean = float(f.mean()) if len(f) else 1.0
+    sel = (np.abs(0.5 * (xi[:, 1] + xj[:, 1])) < half_width) & (f > mean)
+    order = np.argsort(f[sel])
+    segs = np.stack([xi[sel][:, [0, 2]], xj[sel][:, [0, 2]]], axis=1)[order]
+    lc = LineCollection(segs, linewidths=0.4 * f[sel][order] / mean, cmap="inferno_r",
+                        norm=pyplot().Normalize(1, vmax))
+    lc.set_array(f[sel][order] / mean)
+    ax.add_collection(lc)
+    return lc, mean
 
 
 def mesh_study(ax, n, w, g, label, across):

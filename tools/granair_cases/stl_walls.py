@@ -5,6 +5,8 @@ floor with openings needs its facets no larger than a few particles.
     quads = strips(z, x_ranges, y0, y1, piece)     horizontal strips over x ranges, at most `piece` long in x
     quads = tiles(z, x0, x1, y0, y1, nx, ny)       a horizontal rectangle in nx x ny tiles
     quads = annulus(z, R, r1, n)                   a floor around a circular orifice of radius R
+    quads = revolution(r0, r1, z0, z1, rows, n)    a cone frustum or a cylinder: rows x n sectors
+    tris = disk(r, z, n)                           a horizontal disk of n sectors (a shutter, a counter)
 """
 import math
 
@@ -42,3 +44,23 @@ def annulus(z, R, r1, n=96):
             quads.append([(a * math.cos(t0), a * math.sin(t0), z), (b * math.cos(t0), b * math.sin(t0), z),
                           (b * math.cos(t1), b * math.sin(t1), z), (a * math.cos(t1), a * math.sin(t1), z)])
     return quads
+
+
+def revolution(r0, r1, z0, z1, rows, n):
+    """The surface of revolution about the z axis from the circle (r0, z0) to (r1, z1)
+    (a cone frustum, a cylinder if r0 = r1) as rows x n quadrilaterals, rows along it."""
+    quads = []
+    for k in range(rows):
+        ra, rb = r0 + (r1 - r0) * k / rows, r0 + (r1 - r0) * (k + 1) / rows
+        za, zb = z0 + (z1 - z0) * k / rows, z0 + (z1 - z0) * (k + 1) / rows
+        for j in range(n):
+            a0, a1 = 2 * math.pi * j / n, 2 * math.pi * (j + 1) / n
+            quads.append([(ra * math.cos(a0), ra * math.sin(a0), za), (ra * math.cos(a1), ra * math.sin(a1), za),
+                          (rb * math.cos(a1), rb * math.sin(a1), zb), (rb * math.cos(a0), rb * math.sin(a0), zb)])
+    return quads
+
+
+def disk(r, z, n):
+    """The disk of radius r at height z as n triangles from its centre."""
+    return [[(0.0, 0.0, z), (r * math.cos(2 * math.pi * j / n), r * math.sin(2 * math.pi * j / n), z),
+             (r * math.cos(2 * math.pi * (j + 1) / n), r * math.sin(2 * math.pi * (j + 1) / n), z)] for j in range(n)]
