@@ -37,46 +37,6 @@ def read_flow(paths):
     return gc.dem.read_print(paths, COLUMNS)
 
 
-def fill_state(fill, h):
-    """(free surface height [m], bulk density [kg/m3]) of the settled fill: the
-    surface at the mean of the 200 highest centres plus a mean radius, the bulk
-    density of the shaft between 2 d above the hopper and 2 d below the surface."""
-    z, r = fill["z"], fill["radius"]
-    top = np.sort(z)[::-1][:200]
-    surface = float(np.mean(top) + np.mean(r))
-    d = P.d_mass_mean()
-    z0, z1 = h + 2 * d, surface - 2 * d
-    area = math.pi * P.D_SILO ** 2 / 4
-    rho_b = float(fill["mass"][(z > z0) & (z < z1)].sum() / (area * (z1 - z0))) if z1 - z0 > 4 * d else math.nan
-    return surface, rho_b
-
-
-def pattern(fill, final, surface, h):
-    """Flow-pattern measures from the grains' motion between the fill and the end:
-    (mean descent of the wall zone over the core's in the lowest third of the shaft
-    fill, stagnant mass fraction, height of the highest stagnant grain at the wall).
-    Wall zone: r > R - 2 d; core: r < 2 d; a grain that has left counts as descended
-    to the sink; stagnant: moved less than d/2."""
-    d, R = P.d_mass_mean(), P.D_SILO / 2
-    where = {int(i): k for k, i in enumerate(final["id"])}
-    idx = np.array([where.get(int(i), -1) for i in fill["id"]])
-    gone = idx < 0
-    zf = np.where(gone, P.SINK_Z, final["z"][np.maximum(idx, 0)])
-    xf = np.where(gone, 0.0, final["x"][np.maximum(idx, 0)])
-    yf = np.where(gone, 0.0, final["y"][np.maximum(idx, 0)])
-    descent = fill["z"] - zf
-    r0 = np.hypot(fill["x"], fill["y"])
-    low = (fill["z"] > h + d) & (fill["z"] < h + (surface - h) / 3)
-    wall, core = low & (r0 > R - 2 * d), low & (r0 < 2 * d)
-    ratio = float(descent[wall].mean() / descent[core].mean()) if wall.any() and core.any() and \
-        descent[core].mean() > 0 else math.nan
-    moved = np.sqrt((xf - fill["x"]) ** 2 + (yf - fill["y"]) ** 2 + descent ** 2)
-    stagnant = ~gone & (moved < d / 2)
-    at_wall = stagnant & (r0 > R - 2 * d)
-    return (ratio, float(fill["mass"][stagnant].sum() / fill["mass"].sum()),
-            float(fill["z"][at_wall].max()) if at_wall.any() else 0.0)
-
-
 def run(name, run_dir, v, state, out):
     """Post-process one finished run into OUT/a<angle>/s<k>*: returns its scalars."""
     angle, k = v["ANGLE"], int(name.rsplit("-s", 1)[1])
@@ -90,7 +50,9 @@ def run(name, run_dir, v, state, out):
     last = {c: int(flow[c][-1]) for c in COLUMNS[:6]}
     fill = gc.dem.read_dump(os.path.join(pdir, "fill.dump"))
     final = gc.dem.read_dump(os.path.join(pdir, "final.dump"))
-    surface, rho_b = fill_state(fill, h)
+    # the free surface over the 200 highest centres; the shaft's bulk density from 2 d above the hopper
+    rho_b, surface = gc.outlet.bulk_density(fill["z"], fill["mass"], math.pi * P.D_SILO ** 2 / 4, d, floor=h,
+                                            radius=np.mean(fill["radius"]), min_height=4 * d)
     with open(os.path.join(pdir, "fill_forces.txt")) as fh:
         weight, fz_hopper, fz_shaft, fz_shutter = (float(x) for x in fh.read().split()[:4])
     m = flow["discharged_kg"]
@@ -166,7 +128,7 @@ def run(name, run_dir, v, state, out):
     res.update(cg_I1=cg[0] if cg else math.nan, cg_J2=cg[1] if cg else math.nan, cg_points=cg[3] if cg else 0,
                cg_width_m=P.CG_WIDTH)
     res["descent_wall_over_core"], res["stagnant_mass_fraction"], res["dead_zone_wall_height_m"] = \
-        pattern(fill, final, surface, h)
+        gc.outlet.flow_pattern(fill, final, d, P.D_SILO / 2, h, surface, P.SINK_Z)
 
     gc.series.write_rows(os.path.join(adir, f"s{k}_walls.csv"),
                          [dict(wall="hopper" if rings.is_hopper[i] else "shaft", z_m=rings.z[i],
@@ -186,20 +148,14 @@ def run(name, run_dir, v, state, out):
 
 def cg_strain(run_dir, v, t0, t1):
     """(I1, J2, eps, grid points) of the strain per CV_EVERY from the CG velocity field
-    (README "Strain from the CG velocity field"): granairCG on the chunks' merged
-    cv_*.dump over [t0, t1], its strain rate averaged inside the control volume
-    (gc.strain.cg_mean); None (with a message) when granairCG is not built."""
+    over the control volume (gc.strain.cg_cylinder; README "Strain from the CG velocity
+    field"); None (with a message) when granairCG is not built."""
     if shutil.which("granairCG") is None:
         print(f"corn-silo: granairCG not found (./granair build): no CG strain for {run_dir}", flush=True)
         return None
     post = os.path.join(run_dir, "post")
-    merged, n = gc.dem.merge_dumps(sorted(glob.glob(os.path.join(post, "cv_*.dump"))), os.path.join(post, "cv_all.dump"))
-    r, h, stem = P.CV_RADIUS, P.CV_HEIGHT, os.path.join(post, "cg_cv")
-    gc.cg.run(run_dir, stem, {"particles": merged, "dt": v["DT"], "coordinates": "XYZ", "kernel": "gauss",
-                              "width": P.CG_WIDTH, "spacing": P.CG_SPACING, "min": [-r, -r, "0"], "max": [r, r, h],
-                              "from": t0, "to": t1, "format": "csv"}, log="granairCG")
-    f = gc.series.read_csv(stem + ".csv")
-    return gc.strain.cg_mean(f, np.hypot(f["x"], f["y"]) < r, P.CV_EVERY, f"{stem}.csv")
+    return gc.strain.cg_cylinder(run_dir, sorted(glob.glob(os.path.join(post, "cv_*.dump"))), os.path.join(post, "cg_cv"),
+                                 v["DT"], P.CV_RADIUS, P.CV_HEIGHT, P.CG_WIDTH, P.CG_SPACING, t0, t1, P.CV_EVERY)
 
 
 def angle(out, a, runs, seeds, size, run_root):

@@ -7,6 +7,7 @@ CG velocity field (granairCG), so the two can be set side by side.
     rows = series(snapshots, r, h)       the hull strain of every interval between snapshots, a cylinder
     i1, j2 = mean_invariants(rows, t0, dt)   of the time-mean strain of those intervals from t0
     i1, j2, eps, n = cg_mean(f, inside, interval)   of the mean CG strain rate over the points inside x interval
+    i1, j2, eps, n = cg_cylinder(case, dumps, ...)  granairCG on a chunked run's dumps, cg_mean over a cylinder
 
 The hull method: the particles inside the volume at t_k; the triangles of their
 convex hull (a Delaunay triangulation's boundary); over one interval each
@@ -23,7 +24,8 @@ import math
 
 import numpy as np
 
-from . import CaseError
+from . import CaseError, cg, dem
+from .series import read_csv
 
 COMPONENTS = ("xx", "yy", "zz", "xy", "yz", "xz")
 # the columns of series(): interval, particles, hull volume, invariants, the strain's components
@@ -117,3 +119,19 @@ def cg_mean(f, inside, interval, where="the CG fields"):
     eps = tensor(*m)
     i1, _, j2 = invariants(eps)
     return i1, j2, eps, int(ok.sum())
+
+
+def cg_cylinder(case, dumps, stem, dt, radius, height, width, spacing, t0, t1, interval):
+    """cg_mean over the cylinder in_cylinder(radius, height) of granairCG's fields of the
+    particle dumps `dumps` (the chunks of a run: merged into <stem>_particles.dump, each
+    step once) on an XYZ grid of `spacing` over the cylinder's bounding box, Gaussian
+    kernel of `width`, time-averaged over [t0, t1] (dt: the time of one step). The
+    dumps hold id, position, velocity, radius and mass of the particles within the
+    kernel's reach of the cylinder."""
+    merged, _ = dem.merge_dumps(dumps, stem + "_particles.dump")
+    r, h = radius, height
+    cg.run(case, stem, {"particles": merged, "dt": dt, "coordinates": "XYZ", "kernel": "gauss", "width": width,
+                        "spacing": spacing, "min": [-r, -r, "0"], "max": [r, r, h], "from": t0, "to": t1,
+                        "format": "csv"}, log="granairCG")
+    f = read_csv(stem + ".csv")
+    return cg_mean(f, np.hypot(f["x"], f["y"]) < r, interval, f"{stem}.csv")

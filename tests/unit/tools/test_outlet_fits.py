@@ -41,6 +41,30 @@ check("lattice top", top, 39.5 * a)
 # between 2a and 37.5a: layers 2.5a .. 37.5a excluded at the ends -> layers 2.5..36.5 (35 layers) over 35.5 a
 check("lattice bulk density", rho, 35 * 100 * m / ((10 * a) ** 2 * 35.5 * a))
 
+# the same lattice on a floor at 5a, the free surface a radius over the top centres, and a fill
+# too low for a bulk density: NaN with min_height, an error without
+rho_f, top_f = outlet.bulk_density(zs + 5 * a, np.full(zs.size, m), (10 * a) ** 2, a, k_top=100, floor=5 * a,
+                                   radius=0.5 * a)
+check("lattice on a floor: top", top_f, 45.0 * a)
+check("lattice on a floor: bulk density", rho_f, 36 * 100 * m / ((10 * a) ** 2 * 36.0 * a))
+low = outlet.bulk_density(zs[:300], np.full(300, m), (10 * a) ** 2, a, k_top=100, min_height=4 * a)[0]
+if not math.isnan(low):
+    failures.append(f"bulk density of a 3-layer fill with min_height 4 d: {low}, expected NaN")
+
+# flow pattern: a silo R = 10 d whose wall zone stays put while the core descends by 2 d and
+# one core particle leaves (to the sink at -5 d)
+d = 1e-3
+xs = np.array([9.5, -9.5, 0.5, -0.5, 0.0, 5.0]) * d
+zs_p = np.array([1.5, 2.5, 1.5, 2.5, 2.0, 12.0]) * d
+fill = dict(id=np.arange(1.0, 7.0), x=xs, y=np.zeros(6), z=zs_p, mass=np.array([1.0, 1.0, 1.0, 1.0, 2.0, 4.0]))
+final = {k: v[[0, 1, 2, 3, 5]].copy() for k, v in fill.items()}
+final["z"][2:4] -= 2 * d
+final["z"][4] -= 3 * d
+ratio, stagnant, h_dead = outlet.flow_pattern(fill, final, d, 10 * d, 0.0, 12 * d, -5 * d)
+check("wall over core descent", ratio, 0.0)
+check("stagnant mass fraction", stagnant, 2.0 / 10.0)
+check("highest stagnant particle at the wall", h_dead, 2.5 * d)
+
 # Beverloo's C, k recovered from rates of the closed form itself (circular orifice)
 d, rho_b, C, k = 2e-3, 900.0, 0.6, 1.5
 D = [10e-3, 14e-3, 20e-3]
