@@ -32,7 +32,6 @@ import json
 import math
 import os
 import random
-import re
 import time
 
 import numpy as np
@@ -174,29 +173,6 @@ def cg_profiles(run, rv, t_from):
     return os.path.join(run, stem)
 
 
-def bulk(table, lo, hi, rho_p_fallback):
-    """Bulk values of one profile (dict of columns) over lo <= z <= hi."""
-    z = table["z"]
-    sel = (z >= lo) & (z <= hi)
-    gdot = np.polyfit(z[sel], table["velocity_x"][sel], 1)[0]
-    p = float(np.mean(table["pressure"][sel]))
-    tau = float(np.mean(table["shear_stress"][sel]))
-    sxz = float(np.mean(table["stress_xz"][sel]))
-    szz = float(np.mean(table["stress_zz"][sel]))
-    phi = float(np.mean(table["volume_fraction"][sel]))
-    dm = float(np.mean(table["mean_diameter"][sel]))
-    rho_p = float(np.mean(table["particle_density"][sel])) if "particle_density" in table else rho_p_fallback
-    i = abs(gdot) * dm / math.sqrt(p / rho_p)
-    # mu: the shear stress along the shear (coaxial with D, what tau = 2 eta D of
-    # the solver carries) over the isotropic pressure (the solver's p); mu_J2:
-    # sqrt(J2) / P, with the normal-stress differences; mu_xz: sigma_xz / sigma_zz,
-    # the plane-shear convention (GDR MiDi 2004)
-    return dict(I=i, mu=abs(sxz) / p, mu_J2=tau / p, mu_xz=abs(sxz) / szz, P=p, tau=tau, sigma_xz=sxz, sigma_zz=szz,
-                phi=phi,
-                gamma_dot=abs(gdot), d=dm, uniformity=float(np.sqrt(np.mean((table["stress_xz"][sel] - sxz) ** 2))
-                                                            / abs(sxz)))
-
-
 def post_run(run, rv):
     """The run's bulk values, their block standard errors and the wall check."""
     steps = rv["N_STEPS"]
@@ -211,15 +187,10 @@ def post_run(run, rv):
     z_bot, z_top = float(np.mean(w[:, 4])), float(np.mean(w[:, 3]))
     lo, hi = z_bot + 0.5 * wt + P.BAND * d, z_top - 0.5 * wt - P.BAND * d
     mean = gc.cg.read(stem + ".csv")
-    res = bulk(mean, lo, hi, rv["RHO"])
     tables = [gc.cg.read(p) for step, p in gc.dem.numbered(stem + "_*.csv") if step * rv["DEM_DT"] >= t_from - 1e-12]
-    se = gc.series.block_errors(tables, lambda t: bulk(t, lo, hi, rv["RHO"]),
-                                ("I", "mu", "mu_J2", "mu_xz", "phi", "P", "sigma_xz", "sigma_zz"), BLOCKS)
-    res.update({f"{k}_se": v for k, v in se.items()})
-    area = rv["LX"] * rv["LY"]
-    res.update(wall_tau=float(-np.mean(w[:, 0]) / area), wall_sigma=float(np.mean(w[:, 2]) / area),
-               wall_mu=float(-np.mean(w[:, 0]) / np.mean(w[:, 2])), gap=z_top - z_bot - wt, band=(lo, hi),
-               snapshots=len(tables), V=rv["V"], I_target=rv["I_TARGET"], t_from=t_from, t_end=t_end)
+    res = gc.calibration.shear_point(mean, tables, lo, hi, rv["RHO"], w, rv["LX"] * rv["LY"], BLOCKS)
+    res.update(gap=z_top - z_bot - wt, band=(lo, hi), snapshots=len(tables), V=rv["V"], I_target=rv["I_TARGET"],
+               t_from=t_from, t_end=t_end)
     return res, mean
 
 
@@ -300,8 +271,7 @@ def post(a, runs, out):
             with open(ref) as fh:
                 f0 = json.load(fh).get(name, {}).get("fit")
             if f0:
-                dev = [dict(I=r["I"], mu=r["mu"], mu_se=r["mu_se"], mu_reference_fit=gc.calibration.mu_jop(r["I"], f0),
-                            difference=r["mu"] - gc.calibration.mu_jop(r["I"], f0)) for r in rows]
+                dev = gc.calibration.vs_fit(rows, f0)
                 gc.series.write_rows(os.path.join(res_dir, f"vs_P{P.PRESSURE:g}_fit.csv"), dev, fmt="{:.6g}")
                 for x in dev:
                     print(f"{name}, P = {a.pressure:g} Pa, cell {a.cell_x:g} x {a.gap:g} d: I = {x['I']:.3g}: mu {x['mu']:.4f} +- {x['mu_se']:.4f}, "
@@ -360,8 +330,7 @@ def continuum_now():
     Jop et al. 2006 span and I0; cases/wedge-silo/parameters.py)."""
     with open(os.path.join(HERE, "..", "mcc-hopper", "rheology", "muI")) as fh:
         text = fh.read()
-    mcc = {k: float(re.search(rf"^\s*{key}\s+([0-9.eE+-]+);", text, re.M).group(1))
-           for k, key in (("mu_s", "muS"), ("mu_2", "mu2"), ("I0", "I0"), ("phi_max", "phiMax"), ("phi_min", "phiMin"))}
+    mcc = {k: gc.calibration.entry(text, key) for key, k in gc.calibration.KEYS.items()}
     w = P.WEDGE
     mu_s = w.fit_mu_s()[0]
     phi_max = w.FILLS[10][1] / w.RHO_P

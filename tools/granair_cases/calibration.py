@@ -24,6 +24,12 @@ standard error):
     mu_jop(I, f)            mu_s + (mu_2 - mu_s) / (I0 / I + 1) (Jop et al. 2006)
     fit_mu(I, mu, se)       mu_s, mu_2, I0 with standard errors and covariance
     fit_phi(I, phi, se)     phi_max, phi_min of phi = phi_max - (phi_max - phi_min) I
+    vs_fit(rows, f)         each point's mu against a fit (another pressure or cell against the reference)
+
+from a plane shear cell's CG profiles across the gap (granairCG, coordinates Z):
+
+    r = shear_bulk(profile, lo, hi, rho_p)           I, mu (three definitions), phi, P ... over the bulk band
+    r = shear_point(mean, snapshots, lo, hi, rho_p, wall, area)   the same, block errors, the wall's traction
 """
 import json
 import math
@@ -157,3 +163,53 @@ def fit_phi(i, phi, se):
     cov = t @ np.linalg.pinv(aw.T @ aw) @ t.T * max(1.0, chi2 / dof)
     return dict(phi_max=c[0], phi_min=c[0] - c[1], phi_max_se=math.sqrt(cov[0, 0]), phi_min_se=math.sqrt(cov[1, 1]),
                 chi2_reduced=chi2 / dof)
+
+
+def vs_fit(rows, f):
+    """Each point (I, mu, mu_se) of rows against the fit f: [dict(I, mu, mu_se, mu_reference_fit,
+    difference)]."""
+    return [dict(I=r["I"], mu=r["mu"], mu_se=r["mu_se"], mu_reference_fit=mu_jop(r["I"], f),
+                 difference=r["mu"] - mu_jop(r["I"], f)) for r in rows]
+
+
+def shear_bulk(table, lo, hi, rho_p_fallback):
+    """Bulk values of one granairCG profile across the gap of steady plane shear (a dict of
+    columns: z, velocity_x, pressure, shear_stress, stress_xz, stress_zz, volume_fraction,
+    mean_diameter, particle_density if written) over lo <= z <= hi: the shear rate (the
+    slope of V_x), P = tr(sigma)/3, I = gammaDot d / sqrt(P / rho_p) and
+    mu = |sigma_xz| / P: the shear stress along the shear (coaxial with D, what
+    tau = 2 eta D of the continuum solver carries) over the isotropic pressure (the
+    solver's p); also mu_J2 = sqrt(J2) / P (with the normal-stress differences) and
+    mu_xz = sigma_xz / sigma_zz (the plane-shear convention, GDR MiDi 2004), and the rms
+    deviation of sigma_xz across the band over its mean (uniform in steady shear)."""
+    z = table["z"]
+    sel = (z >= lo) & (z <= hi)
+    gdot = np.polyfit(z[sel], table["velocity_x"][sel], 1)[0]
+    p = float(np.mean(table["pressure"][sel]))
+    tau = float(np.mean(table["shear_stress"][sel]))
+    sxz = float(np.mean(table["stress_xz"][sel]))
+    szz = float(np.mean(table["stress_zz"][sel]))
+    phi = float(np.mean(table["volume_fraction"][sel]))
+    dm = float(np.mean(table["mean_diameter"][sel]))
+    rho_p = float(np.mean(table["particle_density"][sel])) if "particle_density" in table else rho_p_fallback
+    i = abs(gdot) * dm / math.sqrt(p / rho_p)
+    return dict(I=i, mu=abs(sxz) / p, mu_J2=tau / p, mu_xz=abs(sxz) / szz, P=p, tau=tau, sigma_xz=sxz, sigma_zz=szz,
+                phi=phi, gamma_dot=abs(gdot), d=dm,
+                uniformity=float(np.sqrt(np.mean((table["stress_xz"][sel] - sxz) ** 2)) / abs(sxz)))
+
+
+SE_KEYS = ("I", "mu", "mu_J2", "mu_xz", "phi", "P", "sigma_xz", "sigma_zz")
+
+
+def shear_point(mean, snapshots, lo, hi, rho_p, wall, area, blocks=5):
+    """One point of a shear-cell sweep: shear_bulk of the time-mean profile, the standard
+    errors of SE_KEYS from `blocks` blocks of the snapshots' profiles (gc.series.block_errors),
+    and the top wall's traction from its force rows `wall` (columns f_x, _, f_z) over the
+    cell's area: wall_tau = -<f_x>/A, wall_sigma = <f_z>/A, wall_mu = -<f_x>/<f_z>."""
+    from . import series
+    res = shear_bulk(mean, lo, hi, rho_p)
+    se = series.block_errors(snapshots, lambda t: shear_bulk(t, lo, hi, rho_p), SE_KEYS, blocks)
+    res.update({f"{k}_se": v for k, v in se.items()})
+    res.update(wall_tau=float(-np.mean(wall[:, 0]) / area), wall_sigma=float(np.mean(wall[:, 2]) / area),
+               wall_mu=float(-np.mean(wall[:, 0]) / np.mean(wall[:, 2])))
+    return res

@@ -6,6 +6,7 @@ viscosity floor the literature block's, written explicitly), d overridden on
 request; a block without an entry, a non-muI block and an
 unknown material stop with the file and the key named."""
 import json
+import math
 import sys
 
 import granair_cases as gc
@@ -81,6 +82,30 @@ if any(abs(exact[k] - truth[k]) > 1e-6 * truth[k] for k in truth):
 fp = calibration.fit_phi(i, 0.62 - 0.2 * i + 0.1 * wiggle, np.full(len(i), 0.001))
 if abs(fp["phi_max"] - 0.62) > 3 * fp["phi_max_se"] or abs(fp["phi_min"] - 0.42) > 3 * fp["phi_min_se"]:
     failures.append(f"fit_phi: {fp} vs phi_max 0.62, phi_min 0.42")
+
+# The shear cell's bulk: a linear velocity profile V_x = gdot z with uniform stresses; only the
+# band lo <= z <= hi counts (outside it the profile is spoiled on purpose)
+z = np.linspace(0.0, 0.02, 41)
+gdot, d, rho_p, p, sxz, szz, phi_b = 30.0, 1e-3, 1500.0, 400.0, -150.0, 420.0, 0.58
+prof = dict(z=z, velocity_x=gdot * z, pressure=np.full(41, p), shear_stress=np.full(41, 160.0),
+            stress_xz=np.full(41, sxz), stress_zz=np.full(41, szz), volume_fraction=np.full(41, phi_b),
+            mean_diameter=np.full(41, d))
+prof["velocity_x"][:5] = 0.0
+prof["stress_xz"][-3:] = 0.0
+b = calibration.shear_bulk(prof, 0.003, 0.018, rho_p)
+want = dict(I=gdot * d / math.sqrt(p / rho_p), mu=150.0 / p, mu_J2=160.0 / p, mu_xz=150.0 / szz, phi=phi_b,
+            gamma_dot=gdot, uniformity=0.0)
+for k, v in want.items():
+    if abs(b[k] - v) > 1e-9 * max(1.0, abs(v)):
+        failures.append(f"shear_bulk {k}: {b[k]!r}, expected {v!r}")
+wall = np.array([[-150.0 * 2e-4, 0.0, 420.0 * 2e-4], [-150.0 * 2e-4, 0.0, 420.0 * 2e-4]])
+pt = calibration.shear_point(prof, [prof] * 10, 0.003, 0.018, rho_p, wall, 2e-4)
+if abs(pt["wall_tau"] - 150.0) > 1e-9 or abs(pt["wall_sigma"] - 420.0) > 1e-9 or pt["mu_se"] > 1e-12:
+    failures.append(f"shear_point: wall {pt['wall_tau']}, {pt['wall_sigma']} Pa, mu_se {pt['mu_se']} "
+                    "(expected 150, 420, 0 for identical snapshots)")
+dev = calibration.vs_fit([dict(I=0.12, mu=0.6, mu_se=0.01)], truth)
+if abs(dev[0]["mu_reference_fit"] - 0.555) > 1e-12 or abs(dev[0]["difference"] - 0.045) > 1e-12:
+    failures.append(f"vs_fit: {dev} (mu_jop(I0) = (mu_s + mu_2) / 2 = 0.555)")
 
 print("\n".join(failures) or "calibration: all checks passed")
 sys.exit(1 if failures else 0)
