@@ -23,8 +23,7 @@ import json
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parse_log import parse_log  # noqa: E402
+from parse_log import parse_log
 
 
 def load_runs(work):

@@ -15,10 +15,8 @@ loaded machine where wall times do not (bench/README.md, "Noise").
 import argparse
 import os
 import statistics
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from parse_log import parse_log  # noqa: E402
+from parse_log import parse_log
 
 
 def main():

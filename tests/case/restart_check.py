@@ -28,8 +28,7 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from first_step_force import read_vtp  # noqa: E402
+from first_step_force import read_vtp
 
 
 def series(case):
