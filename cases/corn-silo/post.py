@@ -168,21 +168,18 @@ def angle(out, a, runs, seeds, size, run_root):
         res[key], res[key + "_sd"] = gc.series.mean_sd([r.get(key) for r in runs])
     # mass flow: every grain moves once any is withdrawn (Jenike); funnel flow leaves grains at rest
     res["pattern"] = "mass flow" if res["stagnant_mass_fraction"] < P.STAGNANT_MASS_FLOW else "funnel flow"
-    flows = [gc.series.read_csv(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_mass_flow.csv")) for r in runs]
-    n = min(len(f["t"]) for f in flows)
-    gc.series.write_csv(os.path.join(adir, "mass_flow.csv"),
-                        [("t", flows[0]["t"][:n]), ("mass_flow_kg_s", np.mean([f["mass_flow_kg_s"][:n] for f in flows], axis=0)),
-                         ("sd_kg_s", np.std([f["mass_flow_kg_s"][:n] for f in flows], axis=0, ddof=1) if len(flows) > 1
-                          else np.full(n, math.nan))], fmt="{:.6g}")
-    profs = [gc.series.read_table(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_walls.csv")) for r in runs]
+    per_run = lambda f: [os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_{f}.csv") for r in runs]  # noqa: E731
+    flows = [gc.series.read_csv(p) for p in per_run("mass_flow")]
+    w = gc.series.mean_sd_columns(flows, ["mass_flow_kg_s"])
+    gc.series.write_csv(os.path.join(adir, "mass_flow.csv"), [("t", flows[0]["t"][:len(w["mass_flow_kg_s"])]),
+                        ("mass_flow_kg_s", w["mass_flow_kg_s"]), ("sd_kg_s", w["mass_flow_kg_s_sd"])], fmt="{:.6g}")
+    profs = [gc.series.read_table(p) for p in per_run("walls")]
     cols = [c for c in profs[0][0] if c.endswith("_Pa")]
-    rows = []
-    for i, row in enumerate(profs[0]):
-        rr = dict(wall=row["wall"], z_m=float(row["z_m"]), along_wall_m=float(row["along_wall_m"]),
-                  depth_m=float(np.mean([float(p[i]["depth_m"]) for p in profs])))
-        for c in cols:
-            rr[c], rr[c[:-3] + "_sd_Pa"] = gc.series.mean_sd([float(p[i][c]) for p in profs])
-        rows.append(rr)
+    ms = gc.series.mean_sd_columns([{c: [row[c] for row in p] for c in cols + ["depth_m"]} for p in profs],
+                                   cols + ["depth_m"])
+    rows = [dict(wall=row["wall"], z_m=float(row["z_m"]), along_wall_m=float(row["along_wall_m"]), depth_m=ms["depth_m"][i],
+                 **{k: ms[c + s][i] for c in cols for k, s in ((c, ""), (c[:-3] + "_sd_Pa", "_sd"))})
+            for i, row in enumerate(profs[0])]
     gc.series.write_rows(os.path.join(adir, "walls.csv"), rows, fmt="{:.6g}")
     res["wall_time_s"] = float(np.mean([r["wall_s"] for r in runs]))
     gc.levels.write(os.path.join(adir, "level.json"), case="corn-silo", level="cg-dem",
@@ -197,7 +194,7 @@ def angle(out, a, runs, seeds, size, run_root):
     first = os.path.join(run_root, runs[0]["run"], "post", "walls_fill.vtk")
     if os.path.exists(first):
         mesh = gc.dem.read_mesh_vtk(first)
-        els = [gc.series.read_csv(os.path.join(adir, f"s{r['run'].rsplit('-s', 1)[1]}_elements.csv")) for r in runs]
+        els = [gc.series.read_csv(p) for p in per_run("elements")]
         pts, tri = gc.dem.merge_points(mesh)
         for state in ("static", "discharge"):
             gc.dem.write_mesh_vtk(os.path.join(adir, f"wall_loads_{state}.vtk"), pts, tri,

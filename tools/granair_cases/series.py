@@ -135,6 +135,19 @@ def mean_sd(values):
     return float(x.mean()), float(x.std(ddof=1)) if len(x) > 1 else float("nan")
 
 
+def mean_sd_columns(tables, keys, n=None):
+    """Row by row mean and sample SD over repeated runs' tables (dicts of columns, e.g.
+    read_csv, or read_table's rows turned into columns) of each of keys, as mean_sd does
+    for one value (None and NaN left out, NaN SD for one run): {key: [means], key_sd:
+    [SDs]}, the first n rows (default: the shortest table's)."""
+    n = min(len(t[keys[0]]) for t in tables) if n is None else n
+    out = {}
+    for k in keys:
+        pairs = [mean_sd([float(t[k][i]) for t in tables]) for i in range(n)]
+        out[k], out[k + "_sd"] = np.array([m for m, _ in pairs]), np.array([s for _, s in pairs])
+    return out
+
+
 def block_errors(tables, fn, keys, blocks=5):
     """Standard errors of the results of fn by block averaging: the snapshots
     `tables` (dicts of arrays, in time order) in `blocks` consecutive blocks,

@@ -325,6 +325,11 @@ class Numerics(unittest.TestCase):
         m, sd = gc.series.mean_sd([1.0, None, 3.0, float("nan")])
         self.assertEqual((m, sd), (2.0, math.sqrt(2)))
         self.assertTrue(math.isnan(gc.series.mean_sd([5.0])[1]))
+        # row by row over runs, cut to the shortest run, strings (read_table) read as numbers
+        cols = gc.series.mean_sd_columns([dict(w=np.array([1.0, 2.0, 9.0])), dict(w=["3", "nan"])], ["w"])
+        self.assertEqual(list(cols["w"]), [2.0, 2.0])
+        self.assertEqual(cols["w_sd"][0], math.sqrt(2))
+        self.assertTrue(math.isnan(cols["w_sd"][1]))
         self.assertEqual(gc.foam.nonuniform([1.0, 0.0]), "nonuniform List<scalar> 2 (1 0)")
         self.assertEqual(gc.foam.nonuniform([(0.5, 0, 0)]), "nonuniform List<vector> 1 ((0.5 0 0))")
 
