@@ -32,33 +32,22 @@ def parse_log(path):
         m = re.search(r"^\s+" + re.escape(label) + r"\s+" + _NUM + r" s(?:\s+" + _NUM + r" %)?\s+cpu\s+" + _NUM +
                       r" s", text, re.M)
         out["cpu_" + key] = float(m.group(3)) if m else float("nan")
-    m = re.search(r"Coupling loop: " + _NUM + r" s wall for (\d+) coupling steps, " + _NUM +
-                  r" particle-steps, " + _NUM + r" particle-steps/s", text)
-    if not m:
-        raise ValueError(f"{path}: no 'Coupling loop:' line")
-    out["loop_s"] = float(m.group(1))
-    out["coupling_steps"] = int(m.group(2))
-    out["particle_steps"] = float(m.group(3))
-    out["throughput"] = float(m.group(4))
-    m = re.search(r"Coupling loop CPU time \(user \+ system\): " + _NUM + r" s on the busiest rank, " + _NUM +
-                  r" s on all ranks", text)
-    if not m:
-        raise ValueError(f"{path}: no 'Coupling loop CPU time' line")
-    out["cpu_max_s"] = float(m.group(1))
-    out["cpu_sum_s"] = float(m.group(2))
-    m = re.search(r"Peak memory \(VmHWM\): " + _NUM + r" MiB on the largest rank, " + _NUM +
-                  r" MiB on all (\d+) rank", text)
-    if not m:
-        raise ValueError(f"{path}: no 'Peak memory' line")
-    out["hwm_max_mib"] = float(m.group(1))
-    out["hwm_sum_mib"] = float(m.group(2))
-    out["ranks"] = int(m.group(3))
-    m = re.search(r"Coupling buffers \(all ranks\): " + _NUM + r" B/particle \(run " + _NUM + r", exchange " +
-                  _NUM + r", coupling step " + _NUM + r"\) for " + _NUM + r" particles; " + _NUM +
-                  r" B/cell for " + _NUM + r" cells", text)
-    if not m:
-        raise ValueError(f"{path}: no 'Coupling buffers' line")
-    keys = ["buf_per_particle", "buf_run", "buf_exchange", "buf_step", "buf_particles", "buf_per_cell", "buf_cells"]
-    for k, v in zip(keys, m.groups()):
-        out[k] = float(v)
+    # the summary lines: (pattern, the line's name for the error, the keys of its numbers, their types)
+    for pattern, what, keys in (
+            (r"Coupling loop: " + _NUM + r" s wall for (\d+) coupling steps, " + _NUM + r" particle-steps, " + _NUM +
+             r" particle-steps/s", "Coupling loop:", (("loop_s", float), ("coupling_steps", int),
+                                                      ("particle_steps", float), ("throughput", float))),
+            (r"Coupling loop CPU time \(user \+ system\): " + _NUM + r" s on the busiest rank, " + _NUM +
+             r" s on all ranks", "Coupling loop CPU time", (("cpu_max_s", float), ("cpu_sum_s", float))),
+            (r"Peak memory \(VmHWM\): " + _NUM + r" MiB on the largest rank, " + _NUM + r" MiB on all (\d+) rank",
+             "Peak memory", (("hwm_max_mib", float), ("hwm_sum_mib", float), ("ranks", int))),
+            (r"Coupling buffers \(all ranks\): " + _NUM + r" B/particle \(run " + _NUM + r", exchange " + _NUM +
+             r", coupling step " + _NUM + r"\) for " + _NUM + r" particles; " + _NUM + r" B/cell for " + _NUM +
+             r" cells", "Coupling buffers", tuple((k, float) for k in (
+                 "buf_per_particle", "buf_run", "buf_exchange", "buf_step", "buf_particles", "buf_per_cell",
+                 "buf_cells")))):
+        m = re.search(pattern, text)
+        if not m:
+            raise ValueError(f"{path}: no '{what}' line")
+        out.update({k: kind(v) for (k, kind), v in zip(keys, m.groups())})
     return out
