@@ -55,7 +55,7 @@ def wall_loads(plt, out, angles, means):
         _err(axes[row][0], angles, means, f"{wall}_peak_{q}_Pa", "discharge, largest instant", color="tab:red",
              ls=":", mfc="none")
         axes[row][0].set_ylabel(f"max {name} [Pa]", fontsize=8)
-        axes[row][1].set_ylabel(f"height of the max [m]", fontsize=8)
+        axes[row][1].set_ylabel("height of the max [m]", fontsize=8)
         axes[row][0].set_ylim(0, None)
     axes[0][0].legend(fontsize=7)
     for ax in axes[-1]:

@@ -6,7 +6,6 @@ Coordinates: x the shear direction, y the vorticity direction (both periodic),
 z across the gap; the bottom wall is at rest, the top wall moves at +V in x
 under the normal force -P Lx Ly (servo: fix aveforce)."""
 import importlib.util
-import math
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -57,7 +57,7 @@ def cell(name, a):
                 RAYLEIGH_S=t_r, LX=lx, LY=ly, GAP=gap, AREA=lx * ly, PRESSURE=a.pressure,
                 SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
                 if m["youngs"] < 5e6 else "# (E >= 5e6 Pa: no soft_particles needed)",
-                COHESION_FIX=(f"fix m5 all property/global cohesionEnergyDensity peratomtypepair 2 "
+                COHESION_FIX=("fix m5 all property/global cohesionEnergyDensity peratomtypepair 2 "
                               + " ".join([f"{m['cohesion']:.6g}"] * 4)) if coh else "# (no cohesion)",
                 COHESION_MODEL=" cohesion sjkr" if coh else "",
                 COHESION_NOTE=", SJKR cohesion" if coh else ", no cohesion",
@@ -415,7 +415,7 @@ def main():
     os.makedirs(runs, exist_ok=True)
     print(f"rheology-calibration: {a.material}, I = {a.I}, P = {a.pressure:g} Pa; work in {runs}", flush=True)
     if a.stage in ("all", "runs"):
-        res = gc.runner.pool([(n, sweep, (n, a, runs)) for n in a.material], a.jobs, "rheology-calibration")
+        gc.runner.pool([(n, sweep, (n, a, runs)) for n in a.material], a.jobs, "rheology-calibration")
         if a.setup_only:
             return print(f"rheology-calibration: run folders written to {runs}")
     c = post(a, runs, a.out)
