@@ -125,6 +125,10 @@ def find_levels(case, b_mm, dirs):
     for d in dirs:
         for path in sorted(glob.glob(os.path.join(d, "**", "*level.json"), recursive=True)):
             real = os.path.realpath(path)
+            # A study's runs/ folder holds its work (chunks, scratch copies of
+            # its results): the committed results beside it are what counts.
+            if "runs" in os.path.relpath(path, d).split(os.sep)[:-1]:
+                continue
             if real in seen:
                 continue
             seen.add(real)
