@@ -179,7 +179,7 @@ def post(run, out, name, v, wall=None):
     gc.levels.write(os.path.join(out, "level.json"), case="wedge-silo", level="two-fluid",
                     model=(f"two-fluid twoPhaseEulerFoam + granair muI (mu_s {v['MU_S']:.3f}) and ErgunGidaspow, "
                            f"Coulomb walls, staircase mesh b/{v['N']}, "
-                           + ("shear-induced pressure, " if v["SHEAR_PRESSURE"] == "on" else "")
+                           + ("shear-induced pressure, " if v["SHEAR_PRESSURE"] == "on" else "contact pressure only, ")
                            + (("air" if v["AIR_MU_FACTOR"] == 1 else f"air at {v['AIR_MU_FACTOR']:g}x viscosity (diagnostic)")
                               if air else "air at 1/100 viscosity (dry)")),
                     b_mm=v["B_MM"], air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
