@@ -19,7 +19,7 @@
     numerics    a root by bisection, a minimum by golden section
     cg_grids    2-D CG fields (RZ, XZ) on their grid: the committed CSV, the density's integral (mass check)
     outlet      particles leaving through an outlet: counter records, window rates, bulk density, Beverloo fit
-    fits        least-squares fits the studies share: phi(I) = a1 / (1 + a2 I), y = alpha f
+    fits        least-squares fits the studies share: phi(I) = a1 / (1 + a2 I), y = alpha f, Beverloo's size term
     stl_walls   flat STL walls in pieces: strips between openings, tiled planes
     field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
 
