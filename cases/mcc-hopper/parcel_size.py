@@ -11,6 +11,10 @@ W = C rho_b sqrt(g) (D - k d)^2.5 at fixed D, makes W^0.4 linear in the parcel
 d: fits.beverloo_size fits that line, checks the points against it (chi2, the
 Birge ratio, residuals in sigmas), and extrapolates to the primary d = 660 um;
 every pair of sizes is extrapolated too (how much one run moves the answer).
+Runs with another packing seed (reference-cg-dem/seed<n>/s<S>/, `Allrun-dem
+--s S --seed n`) are not in the fit: each is compared with the seed-1 run of
+its size, the difference in units of their combined standard error (a test of
+whether the window noise covers the run-to-run scatter).
 
 The continuum with the DEM-calibrated mu(I) (results/calibrated/, N = 28) at the
 grain size its I uses: d = 3.3 mm (the parcels the law was fitted on), 660 um
@@ -40,10 +44,11 @@ CALIBRATED = os.path.join(HERE, "results", "calibrated")
 TARGET = 0.15          # issue 16: the continuum within 15 % of the DEM
 
 
-def dem_runs():
-    """The DEM runs at each s: [{s, d, W, se, sd, n, rho_b, cpu, folder}], by d."""
+def dem_runs(folders=None):
+    """The DEM runs at each s (seed 1; or those in `folders`):
+    [{s, d, W, se, sd, n, rho_b, cpu, folder}], by d."""
     out = []
-    for folder in [DEM] + sorted(glob.glob(os.path.join(DEM, "s[0-9]*"))):
+    for folder in folders or [DEM] + sorted(glob.glob(os.path.join(DEM, "s[0-9]*"))):
         p = os.path.join(folder, "summary.txt")
         if not os.path.exists(p):
             continue
@@ -97,6 +102,14 @@ def main():
             f2 = gc.fits.beverloo_size(d[[i, j]], w[[i, j]], se[[i, j]], P.D_OUTLET, P.D_PARTICLE)
             pairs.append(dict(s=[runs[i]["s"], runs[j]["s"]], k=f2["k"], W=f2["w_at"], se=f2["w_at_se"]))
     w_ext, w_ext_se = fit["w_at"], fit["w_at_se"]
+    seeds = []
+    for r in dem_runs(sorted(glob.glob(os.path.join(DEM, "seed[0-9]*", "s[0-9]*")))):
+        ref = next((x for x in runs if abs(x["s"] - r["s"]) < 1e-9), None)
+        if ref:
+            r["seed_dir"] = r["folder"]
+            r["W_seed1"], r["se_seed1"] = ref["W"], ref["se"]
+            r["z"] = (r["W"] - ref["W"]) / math.hypot(r["se"], ref["se"])
+            seeds.append(r)
     dem_at = {round(r["d"] * 1e6): r for r in runs}
     cont = continuum_runs()
     for c in cont:
@@ -110,7 +123,8 @@ def main():
              "sigma_W = standard error of the 50 ms window means (AR(1)-inflated); w_at_se scaled by the Birge ratio when > 1",
         primary_d_m=P.D_PARTICLE, runs=runs, fit={k: v for k, v in fit.items() if k != "residuals"},
         mean_settled_bulk_density_kg_m3=rho_b, pairs=pairs,
-        dem_size_converged_kg_s=w_ext, dem_size_converged_se_kg_s=w_ext_se, continuum=cont, target=TARGET)
+        dem_size_converged_kg_s=w_ext, dem_size_converged_se_kg_s=w_ext_se, seed_repeats=seeds, continuum=cont,
+        target=TARGET)
     os.makedirs(a.out, exist_ok=True)
     with open(os.path.join(a.out, "parcel_size.json"), "w") as fh:
         json.dump(result, fh, indent=1)
@@ -128,6 +142,9 @@ def main():
           f"{w_ext:.4f} +- {w_ext_se:.4f} kg/s")
     for p in pairs:
         print(f"  pair s = {p['s'][0]:g}, {p['s'][1]:g}: k = {p['k']:.3f}, W(660 um) = {p['W']:.4f} +- {p['se']:.4f}")
+    for r in seeds:
+        print(f"  seed repeat {r['folder']}: W {r['W']:.4f} +- {r['se']:.4f} against seed 1 {r['W_seed1']:.4f} +- "
+              f"{r['se_seed1']:.4f}: difference {r['z']:+.2f} combined s.e.")
     for c in cont:
         same = f", {c['over_dem_same_d']:.3f} x the DEM at that d" if c["over_dem_same_d"] else ""
         print(f"  continuum, calibrated mu(I), d in I = {c['d'] * 1e6:.0f} um ({c['folder']}): W {c['W']:.4f} kg/s = "
