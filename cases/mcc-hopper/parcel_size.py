@@ -14,7 +14,8 @@ every pair of sizes is extrapolated too (how much one run moves the answer).
 Runs with another packing seed (reference-cg-dem/seed<n>/s<S>/, `Allrun-dem
 --s S --seed n`) are not in the fit: each is compared with the seed-1 run of
 its size, the difference in units of their combined standard error (a test of
-whether the window noise covers the run-to-run scatter).
+whether the window noise covers the run-to-run scatter), and the fit is repeated
+over all runs, seeds included (`fit_all_seeds`).
 
 The continuum with the DEM-calibrated mu(I) (results/calibrated/, N = 28) at the
 grain size its I uses: d = 3.3 mm (the parcels the law was fitted on), 660 um
@@ -110,6 +111,11 @@ def main():
             r["W_seed1"], r["se_seed1"] = ref["W"], ref["se"]
             r["z"] = (r["W"] - ref["W"]) / math.hypot(r["se"], ref["se"])
             seeds.append(r)
+    fit_all = None
+    if seeds:
+        every = runs + seeds
+        fit_all = gc.fits.beverloo_size([r["d"] for r in every], [r["W"] for r in every], [r["se"] for r in every],
+                                        P.D_OUTLET, P.D_PARTICLE)
     dem_at = {round(r["d"] * 1e6): r for r in runs}
     cont = continuum_runs()
     for c in cont:
@@ -123,7 +129,7 @@ def main():
              "sigma_W = standard error of the 50 ms window means (AR(1)-inflated); w_at_se scaled by the Birge ratio when > 1",
         primary_d_m=P.D_PARTICLE, runs=runs, fit={k: v for k, v in fit.items() if k != "residuals"},
         mean_settled_bulk_density_kg_m3=rho_b, pairs=pairs,
-        dem_size_converged_kg_s=w_ext, dem_size_converged_se_kg_s=w_ext_se, seed_repeats=seeds, continuum=cont,
+        dem_size_converged_kg_s=w_ext, dem_size_converged_se_kg_s=w_ext_se, seed_repeats=seeds, fit_all_seeds=fit_all, continuum=cont,
         target=TARGET)
     os.makedirs(a.out, exist_ok=True)
     with open(os.path.join(a.out, "parcel_size.json"), "w") as fh:
@@ -134,7 +140,7 @@ def main():
                                line_W_kg_s=r["line_W"], residual_sigma=r["residual_sigma"],
                                settled_bulk_density_kg_m3=r["rho_b"], parcels=r["parcels"], cpu_s=r["cpu"])
                           for r in runs])
-    plot(runs, fit, pairs, cont, os.path.join(a.out, "parcel_size.png"))
+    plot(runs, fit, pairs, cont, seeds, os.path.join(a.out, "parcel_size.png"))
     sizes = ", ".join(f"{r['s']:g}" for r in runs)
     print(f"mcc-hopper parcel size: {len(runs)} DEM runs (s = {sizes}): "
           f"k = {fit['k']:.3f} +- {fit['k_se']:.3f}, C = {fit['C']:.3f}, chi2 {fit['chi2']:.2f} on {fit['dof']} dof "
@@ -145,6 +151,10 @@ def main():
     for r in seeds:
         print(f"  seed repeat {r['folder']}: W {r['W']:.4f} +- {r['se']:.4f} against seed 1 {r['W_seed1']:.4f} +- "
               f"{r['se_seed1']:.4f}: difference {r['z']:+.2f} combined s.e.")
+    if fit_all:
+        print(f"  fit over all {len(runs) + len(seeds)} runs (seeds included): k = {fit_all['k']:.3f} +- "
+              f"{fit_all['k_se']:.3f}, chi2 {fit_all['chi2']:.2f} on {fit_all['dof']} dof (Birge {fit_all['birge']:.2f}); "
+              f"W at 660 um {fit_all['w_at']:.4f} +- {fit_all['w_at_se']:.4f} kg/s")
     for c in cont:
         same = f", {c['over_dem_same_d']:.3f} x the DEM at that d" if c["over_dem_same_d"] else ""
         print(f"  continuum, calibrated mu(I), d in I = {c['d'] * 1e6:.0f} um ({c['folder']}): W {c['W']:.4f} kg/s = "
@@ -152,7 +162,7 @@ def main():
               f"{c['over_dem_converged_band'][1]:.3f}){same}; within 15 %: {'yes' if c['within_target'] else 'no'}")
 
 
-def plot(runs, fit, pairs, cont, path):
+def plot(runs, fit, pairs, cont, seeds, path):
     plt = gc.plots.pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
     x = np.linspace(0.0, max(r["d"] for r in runs) * 1.1, 200)
@@ -160,6 +170,9 @@ def plot(runs, fit, pairs, cont, path):
     ax.plot(x * 1e3, y, "k-", lw=1, label=f"Beverloo size fit, W^0.4 linear in d: k = {fit['k']:.2f} ± {fit['k_se']:.2f}")
     ax.errorbar([r["d"] * 1e3 for r in runs], [r["W"] for r in runs], yerr=[r["se"] for r in runs], fmt="o",
                 color="tab:blue", capsize=3, label="cg-DEM at s = " + ", ".join(f"{r['s']:g}" for r in runs) + " (± s.e.)")
+    if seeds:
+        ax.errorbar([r["d"] * 1e3 for r in seeds], [r["W"] for r in seeds], yerr=[r["se"] for r in seeds], fmt="o",
+                    mfc="none", color="tab:blue", capsize=3, label="another packing seed (not in the fit)")
     ax.errorbar([P.D_PARTICLE * 1e3], [fit["w_at"]], yerr=[fit["w_at_se"]], fmt="s", color="k", capsize=4,
                 label=f"extrapolated to 660 µm: {fit['w_at']:.4f} ± {fit['w_at_se']:.4f} kg/s")
     ax.axhspan(fit["w_at"] * (1 - TARGET), fit["w_at"] * (1 + TARGET), color="0.85", zorder=0,
