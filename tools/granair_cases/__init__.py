@@ -19,7 +19,7 @@
     numerics    a root by bisection, a minimum by golden section
     cg_grids    2-D CG fields (RZ, XZ) on their grid: the committed CSV, the density's integral (mass check)
     outlet      particles leaving through an outlet: counter records, window rates, bulk density, Beverloo fit
-    fits        least-squares fits the studies share: phi(I) = a1 / (1 + a2 I), y = alpha f
+    fits        least-squares fits the studies share: phi(I) = a1 / (1 + a2 I), y = alpha f, Beverloo's size term
     stl_walls   STL walls in pieces: strips between openings, tiled planes, surfaces of revolution, disks
     strain      the strain of the particles in a control volume: by their convex hull, from a CG field
     wall_rings  wall loads (LIGGGHTS mesh stress) per ring of elements, Janssen's slice balance

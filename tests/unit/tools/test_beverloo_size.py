@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""fits.beverloo_size and fits.mean_se (tools/granair_cases/fits.py) on inputs whose answer
+is known: Beverloo rates made with a known k at three parcel sizes (k and the rate at the
+primary size recovered exactly), two points (the extrapolation's error from the two
+Lagrange weights by hand), three points off a line by hand-computed amounts (chi2, the
+Birge ratio and the scaled error), bad input, and the standard error of a short series
+with a hand-computed lag-1 autocorrelation."""
+import math
+import sys
+
+import numpy as np
+
+from granair_cases import closed_forms, fits
+
+failures = []
+
+
+def check(name, got, want, rel=1e-9, abs_=0.0):
+    if not (abs(got - want) <= max(rel * abs(want), abs_)):
+        failures.append(f"{name}: got {got!r}, expected {want!r} (rel {rel}, abs {abs_})")
+
+
+# exact Beverloo rates, D = 25 mm, k = 1.5, at the parcel sizes of s = 4, 5, 6 (660 um primaries)
+D, k, rho_b = 25e-3, 1.5, 887.0
+d = np.array([4, 5, 6]) * 660e-6
+w = np.array([closed_forms.beverloo_circular(D, x, rho_b, k) for x in d])
+f = fits.beverloo_size(d, w, 0.01 * w, D, 660e-6)
+check("k from exact rates", f["k"], k, 1e-9)
+check("W at the primary size", f["w_at"], closed_forms.beverloo_circular(D, 660e-6, rho_b, k), 1e-9)
+check("chi2 of exact rates", f["chi2"], 0.0, abs_=1e-12)
+check("dof", f["dof"], 1)
+check("exact rates: scaled error = statistical error", f["w_at_se"], f["w_at_se_stat"], 1e-12)
+
+# two points: the line through them; var(y_at) = (L1 s1)^2 + (L2 s2)^2 with the Lagrange weights
+d2, w2, se2 = np.array([3.3e-3, 3.96e-3]), np.array([0.0915, 0.0823]), np.array([0.001, 0.0014])
+f = fits.beverloo_size(d2, w2, se2, D, 660e-6)
+y, sy = w2 ** 0.4, 0.4 * w2 ** -0.6 * se2
+l1, l2 = (d2[1] - 660e-6) / (d2[1] - d2[0]), (660e-6 - d2[0]) / (d2[1] - d2[0])
+y_at = l1 * y[0] + l2 * y[1]
+check("two points: W at the primary size", f["w_at"], y_at ** 2.5, 1e-12)
+check("two points: its error", f["w_at_se_stat"], 2.5 * y_at ** 1.5 * math.hypot(l1 * sy[0], l2 * sy[1]), 1e-9)
+check("two points: k", f["k"], -(y[1] - y[0]) / (d2[1] - d2[0]) * D / (y[0] - d2[0] * (y[1] - y[0]) / (d2[1] - d2[0])), 1e-9)
+if not (math.isnan(f["birge"]) and f["w_at_se"] == f["w_at_se_stat"]):
+    failures.append("two points: expected no Birge ratio and the statistical error")
+
+# three points off the line y = 1 + x by hand: d = 1, 2, 3, y = 1, 2.2, 3, sigma_y 0.1: the
+# fit is y = 0.0667 + 1.0 d, residuals -2/3, 4/3, -2/3 sigma, chi2 8/3, Birge sqrt(8/3)
+y3, s3 = np.array([1.0, 2.2, 3.0]), 0.1
+w3 = y3 ** 2.5
+f = fits.beverloo_size([1.0, 2.0, 3.0], w3, s3 / (0.4 * w3 ** -0.6), 10.0, 0.0)
+check("off-line slope", f["b1"], 1.0, 1e-9)
+check("off-line intercept", f["b0"], 0.2 / 3, 1e-9)
+for i, want in enumerate((-2 / 3, 4 / 3, -2 / 3)):
+    check(f"off-line residual {i}", f["residuals"][i], want, 1e-9)
+check("off-line chi2", f["chi2"], 8 / 3, 1e-9)
+check("off-line Birge ratio", f["birge"], math.sqrt(8 / 3), 1e-9)
+check("off-line scaled error", f["w_at_se"], math.sqrt(8 / 3) * f["w_at_se_stat"], 1e-9)
+# var(b0) of three equally weighted points at d = 1, 2, 3: s^2 sum d^2 / (n sum d^2 - (sum d)^2) = s^2 14/6
+check("off-line intercept error", f["w_at_se_stat"], 2.5 * (0.2 / 3) ** 1.5 * s3 * math.sqrt(14 / 6), 1e-9)
+
+for bad in (([3e-3], [0.09], [0.001]), ([3e-3, 4e-3], [0.09, 0.08], [0.001, 0.0])):
+    try:
+        fits.beverloo_size(*bad, D, 660e-6)
+        failures.append(f"beverloo_size{bad}: expected ValueError")
+    except ValueError:
+        pass
+
+# mean_se: x = 1, 2, 3, 4: residuals -1.5 -0.5 0.5 1.5, r1 = 1.25 / 5 = 0.25, sd^2 = 5/3:
+# se = sqrt(5/3) / 2 * sqrt(1.25 / 0.75) = 5/6
+m, se = fits.mean_se([1.0, 2.0, 3.0, 4.0])
+check("mean", m, 2.5)
+check("se with r1 = 0.25", se, 5 / 6, 1e-12)
+m, se = fits.mean_se([1.0, 3.0, 1.0, 3.0, 1.0, 3.0])        # r1 < 0: plain sd / sqrt(n)
+check("se with r1 < 0", se, np.std([1, 3, 1, 3, 1, 3], ddof=1) / math.sqrt(6), 1e-12)
+if not math.isnan(fits.mean_se([1.0, 2.0])[1]):
+    failures.append("mean_se of two values: expected NaN")
+
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)
+print("beverloo_size, mean_se: all checks passed")
