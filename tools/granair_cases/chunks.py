@@ -49,12 +49,14 @@ def _say(line):
 
 
 def record(case, name="chunks"):
-    """What log/<name>.json holds: chunks [entries], reason (None while running)."""
+    """What log/<name>.json holds: chunks [entries], reason (None while running).
+    A run chained before the record existed has only restart/<name>_<k>.done
+    markers: their entries (read, not saved), so cost() counts those runs too."""
     path = os.path.join(case, "log", name + ".json")
     if os.path.exists(path):
         with open(path) as fh:
             return json.load(fh)
-    return dict(chunks=[], reason=None)
+    return dict(chunks=_marker_chunks(case, name), reason=None)
 
 
 def _save(case, rec, name):
@@ -222,13 +224,19 @@ def liggghts(case, script, segments, first, name="segment", label="granair", col
 def _markers(case, name):
     """A chain run before the record existed left restart/<name>_<k>.done markers
     (`key = value` lines): their segments become the record's entries."""
-    rdir = os.path.join(case, "restart")
     if os.path.exists(os.path.join(case, "log", name + ".json")):
         return
+    chunks = _marker_chunks(case, name)
+    if chunks:
+        _save(case, dict(chunks=chunks, reason=None), name)
+
+
+def _marker_chunks(case, name):
+    """The entries of the old restart/<name>_<k>.done markers (`key = value` lines)."""
+    rdir = os.path.join(case, "restart")
     chunks = []
     while os.path.exists(os.path.join(rdir, f"{name}_{len(chunks) + 1}.done")):
         with open(os.path.join(rdir, f"{name}_{len(chunks) + 1}.done")) as fh:
             kv = dict(line.split(" = ") for line in fh.read().splitlines() if " = " in line)
         chunks.append(dict(k=len(chunks) + 1, cpu_s=float(kv["cpu_s"]), wall_s=float(kv["wall_s"])))
-    if chunks:
-        _save(case, dict(chunks=chunks, reason=None), name)
+    return chunks

@@ -385,6 +385,9 @@ class Chunks(unittest.TestCase):
             write(os.path.join(case, "fill.restart"), "x")
             write(os.path.join(case, "restart", "seg_1.done"), "cpu_s = 1.5\nwall_s = 2.0\n")
             write(os.path.join(case, "restart", "seg_1.restart"), "x")
+            # a finished run of the old layout: its cost is the markers' (nothing saved by reading it)
+            self.assertEqual(gc.chunks.cost(case, "seg"), (1.5, 2.0, 1))
+            self.assertFalse(os.path.exists(os.path.join(case, "log", "seg.json")))
 
             def plan(k, rec):
                 return None if k > 3 else dict(n=sum(c["n"] for c in rec["chunks"][1:]) + k)
