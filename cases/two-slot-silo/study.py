@@ -21,7 +21,6 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
 
 import granair_cases as gc        # noqa: E402
 import parameters as P            # noqa: E402

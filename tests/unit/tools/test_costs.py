@@ -20,7 +20,6 @@ import tempfile
 import unittest
 from contextlib import redirect_stdout
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools"))
 from granair_cases import costs as cm  # noqa: E402
 import estimate  # noqa: E402
 
