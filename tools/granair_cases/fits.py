@@ -9,6 +9,8 @@ import math
 
 import numpy as np
 
+from . import numerics
+
 
 def phi_of_I(i, phi, a2_max=50.0):
     """phi = a1 / (1 + a2 I), least squares in phi (not in 1/phi, which loose points at
@@ -22,14 +24,7 @@ def phi_of_I(i, phi, a2_max=50.0):
         u = 1 / (1 + a2 * i)
         a1 = float(np.dot(phi, u) / np.dot(u, u))
         return float(np.sum((phi - a1 * u) ** 2)), a1
-    lo, hi, g = 0.0, a2_max, (math.sqrt(5) - 1) / 2
-    for _ in range(80):
-        m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
-        if best(m1)[0] < best(m2)[0]:
-            hi = m2
-        else:
-            lo = m1
-    a2 = 0.5 * (lo + hi)
+    a2 = numerics.golden(lambda a: best(a)[0], 0.0, a2_max)
     return best(a2)[1], a2
 
 
