@@ -1,0 +1,76 @@
+"""The driver of a DEM study of many stand-alone LIGGGHTS runs (cases/corn-silo,
+two-slot-silo, orifice-arch; docs/cases.md "A study of many runs"): fills run
+once, runs resume (their chunks: gc.chunks), --jobs of them at a time, and
+--setup-only / --post-only mean the same in every such study.
+
+    options(ap, fresh=False, post_only=True)   --jobs, --post-only (and --fresh) on a gc.cli parser
+    a = parse(ap, default_out)                 gc.cli.parse; one rank a run, --jobs >= 1
+    rec = once(path, fn, needs=())             a stage run once (a fill): fn()'s dict kept at path
+    done = drive(a, label, fills, runs)        the stages: [(name, setup, simulate[, post])]
+"""
+import json
+import os
+import time
+
+from . import cli, runner
+
+
+def options(ap, fresh=False, post_only=True):
+    """The study options beyond gc.cli's: --jobs, --post-only, and --fresh if asked."""
+    ap.add_argument("--jobs", type=int, default=2, help="LIGGGHTS runs at a time, one rank each (default 2)")
+    if post_only:
+        ap.add_argument("--post-only", action="store_true", help="post-process the finished runs, run nothing")
+    if fresh:
+        ap.add_argument("--fresh", action="store_true", help="start every run again (default: resume)")
+    return ap
+
+
+def parse(ap, default_out, argv=None):
+    """gc.cli.parse, and the runs' limits: LIGGGHTS runs serially here (--np 1), --jobs >= 1."""
+    a = cli.parse(ap, default_out, argv)
+    if a.np != 1:
+        ap.error(f"--np {a.np}: the runs are serial LIGGGHTS jobs, one rank each (use --jobs for more at a time)")
+    if a.jobs < 1:
+        ap.error(f"--jobs {a.jobs}: expected a whole number >= 1")
+    return a
+
+
+def once(path, fn, needs=()):
+    """A stage that runs once, e.g. a fill: fn() returns a dict (its CPU seconds and
+    what the study keeps), saved at path (JSON) with wall_s, the stage's wall seconds.
+    While path and every file of needs (the stage's restart) exist, a later call
+    returns the saved dict instead of running it again. Returns (dict, ran now)."""
+    if os.path.exists(path) and all(os.path.exists(p) for p in needs):
+        with open(path) as fh:
+            return json.load(fh), False
+    t0 = time.time()
+    rec = dict(fn())
+    rec.setdefault("wall_s", round(time.time() - t0, 1))
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w") as fh:
+        json.dump(rec, fh, indent=1)
+    return rec, True
+
+
+def drive(a, label, fills, runs):
+    """The study's stages: fills and runs are lists of (name, setup, simulate[, post]).
+    setup() writes the stage's folder from the template (a started one may keep its
+    own), simulate() runs what is left of it and returns its result (a dict, cpu_s in
+    it for the pool's line), post() post-processes a finished one (its result, or None).
+    --setup-only (a.setup_only): every setup, nothing run (returns None); --post-only
+    (a.post_only): the runs' post() only; else every fill, then every run, a.jobs at a
+    time (gc.runner.pool: the first failure stops the study). Returns {name: result}
+    of the runs."""
+    if a.setup_only:
+        for stage in fills + runs:
+            stage[1]()
+        print(f"{label}: {len(fills) + len(runs)} folders written to {os.path.join(a.out, 'runs')}", flush=True)
+        return None
+    if a.post_only:
+        return runner.pool([(s[0], s[3], ()) for s in runs if len(s) > 3 and s[3]], a.jobs, label)
+
+    def both(setup, simulate):
+        setup()
+        return simulate()
+    runner.pool([(s[0], both, s[1:3]) for s in fills], a.jobs, label)
+    return runner.pool([(s[0], both, s[1:3]) for s in runs], a.jobs, label)
