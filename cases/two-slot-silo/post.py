@@ -193,8 +193,8 @@ def run(v, L, run_dir, fill, out):
     name = silo.geometry_name(L)
     os.makedirs(out, exist_ok=True)
     js = os.path.join(out, f"{name}.json")
-    cost = silo.read_cost(run_dir)
-    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(silo.done_file(run_dir)):
+    cost = silo.cost(run_dir)
+    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(silo.record_file(run_dir)):
         with open(js) as fh:
             return json.load(fh)
     acc = accounting(v, run_dir, fill)
@@ -203,7 +203,7 @@ def run(v, L, run_dir, fill, out):
     r = dict(friction=v["FRICTION"], geometry=name, L_mm=None if L == P.SINGLE else L, size=v["SIZE"],
              openings_m=P.openings(L), accounting=acc, flow=q,
              cost=dict(cost, total_cpu_s=round(sum(c["cpu_s"] for c in cost.values()), 1)),
-             fill_cost=silo.read_cost(fill).get("fill"), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
+             fill_cost=silo.fill_cost(fill), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
     if v["CG"]:
         cg, cols = cg_fields(v, L, run_dir)
         gc.series.write_csv(os.path.join(out, f"{name}_cg.csv"), cols, fmt="{:.6g}")
@@ -252,7 +252,7 @@ def study(a, runs, geoms, c):
         for L in geoms:
             run_dir = os.path.join(runs, f, silo.geometry_name(L))
             if not os.path.exists(os.path.join(a.out, f, f"{silo.geometry_name(L)}.json")) and \
-                    os.path.exists(silo.done_file(run_dir)) and "chunk_%d" % silo.chunks(v)[-1][0] in silo.read_cost(run_dir):
+                    os.path.exists(silo.record_file(run_dir)) and silo.finished(v, run_dir):
                 try:
                     run(v, L, run_dir, fill, os.path.join(a.out, f))
                 except gc.CaseError as e:
