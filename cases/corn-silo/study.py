@@ -128,8 +128,10 @@ def setup(run, v, fresh):
     gc.template.save_values(saved, v)
 
 
-def simulate(name, run, v, out):
-    """Fill (if not done) and the discharge chunks still to run; post-processes the run."""
+def simulate(name, run, v, out, fresh):
+    """The folder (setup), the fill (if not done) and the discharge chunks still to run;
+    post-processes the run."""
+    setup(run, v, fresh)
     def fill():
         for f in os.listdir(os.path.join(run, "post")):
             os.remove(os.path.join(run, "post", f))
@@ -212,7 +214,7 @@ def main():
             name = f"a{angle}-s{k + 1}"
             v = numbers(size["grains"], discharge, angle, k, a.youngs)
             run = os.path.join(a.out, "runs", name)
-            runs.append((name, partial(setup, run, v, a.fresh), partial(simulate, name, run, v, a.out),
+            runs.append((name, partial(setup, run, v, a.fresh), partial(simulate, name, run, v, a.out, a.fresh),
                          partial(finished, name, run, v, a.out)))
     done = gc.study.drive(a, "corn-silo", [], runs)
     if done is None:

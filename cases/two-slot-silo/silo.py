@@ -126,15 +126,15 @@ def setup_run(v, L, run, fill):
 
 
 def fill_stage(v, fill):
-    """(setup, simulate) of a friction set's fill (gc.study.drive): the folder, kept once
-    the fill has run; the fill, run once (gc.study.once: cost.json and its restart)."""
-    record, restart = os.path.join(fill, "cost.json"), os.path.join(fill, "dem", "fill.restart")
-
+    """(setup, simulate) of a friction set's fill (gc.study.drive): the folder; the fill
+    with its folder, run once (gc.study.once: cost.json and its restart)."""
     def setup():
-        if not (os.path.exists(record) and os.path.exists(restart)):
-            setup_fill(v, gc.runner.clean(fill))
-    return setup, lambda: gc.study.once(record, lambda: {"cpu_s": round(gc.runner.liggghts(fill, "dem/in.fill", "fill"), 1)},
-                                        [restart])[0]
+        setup_fill(v, gc.runner.clean(fill))
+
+    def run():
+        setup()
+        return {"cpu_s": round(gc.runner.liggghts(fill, "dem/in.fill", "fill"), 1)}
+    return setup, lambda: gc.study.once(os.path.join(fill, "cost.json"), run, [os.path.join(fill, "dem", "fill.restart")])[0]
 
 
 def fill_cost(fill):
@@ -167,12 +167,11 @@ def finished(v, run):
 
 
 def run_stage(v, L, run, fill, progress=print):
-    """(setup, simulate) of one geometry's discharge (gc.study.drive): the folder, kept
-    once a chunk has run; the chunks in turn (gc.chunks.loop: a stopped study resumes
-    at the chunk it was in), returning the cost()."""
+    """(setup, simulate) of one geometry's discharge (gc.study.drive): the folder; the
+    chunks in turn (gc.chunks.loop: a stopped study resumes at the chunk it was in; the
+    folder kept once one has run), returning the cost()."""
     def setup():
-        if not os.path.exists(record_file(run)):
-            setup_run(v, L, gc.runner.clean(run), fill)
+        setup_run(v, L, gc.runner.clean(run), fill)
 
     def step(rec):
         if len(rec["chunks"]) == len(chunks(v)):
@@ -183,4 +182,10 @@ def run_stage(v, L, run, fill, progress=print):
             os.remove(os.path.join(run, "dem", f"chunk_{k - 2}.restart"))      # no longer needed
         progress(f"{os.path.basename(run)}: chunk {k} done, {cpu:.0f} s CPU")
         return dict(k=k, cpu_s=round(cpu, 1), steps=steps, cg=cg)
-    return setup, lambda: (gc.chunks.loop(run, step, "discharge"), cost(run))[1]
+
+    def simulate():
+        if not os.path.exists(record_file(run)):
+            setup()
+        gc.chunks.loop(run, step, "discharge")
+        return cost(run)
+    return setup, simulate

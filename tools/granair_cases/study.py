@@ -54,13 +54,13 @@ def once(path, fn, needs=()):
 
 def drive(a, label, fills, runs):
     """The study's stages: fills and runs are lists of (name, setup, simulate[, post]).
-    setup() writes the stage's folder from the template (a started one may keep its
-    own), simulate() runs what is left of it and returns its result (a dict, cpu_s in
-    it for the pool's line), post() post-processes a finished one (its result, or None).
-    --setup-only (a.setup_only): every setup, nothing run (returns None); --post-only
-    (a.post_only): the runs' post() only; else every fill, then every run, a.jobs at a
-    time (gc.runner.pool: the first failure stops the study). Returns {name: result}
-    of the runs."""
+    setup() writes the stage's folder from the template and runs nothing (--setup-only);
+    simulate() sets up what has not started (a started folder keeps its own), runs what
+    is left and returns its result (a dict, cpu_s in it for the pool's line); post()
+    post-processes a finished run (its result, or None). --setup-only (a.setup_only):
+    every setup (returns None); --post-only (a.post_only): the runs' post() only; else
+    every fill, then every run, a.jobs at a time (gc.runner.pool: the first failure
+    stops the study). Returns {name: result} of the runs."""
     if a.setup_only:
         for stage in fills + runs:
             stage[1]()
@@ -68,9 +68,5 @@ def drive(a, label, fills, runs):
         return None
     if a.post_only:
         return runner.pool([(s[0], s[3], ()) for s in runs if len(s) > 3 and s[3]], a.jobs, label)
-
-    def both(setup, simulate):
-        setup()
-        return simulate()
-    runner.pool([(s[0], both, s[1:3]) for s in fills], a.jobs, label)
-    return runner.pool([(s[0], both, s[1:3]) for s in runs], a.jobs, label)
+    runner.pool([(s[0], s[2], ()) for s in fills], a.jobs, label)
+    return runner.pool([(s[0], s[2], ()) for s in runs], a.jobs, label)
