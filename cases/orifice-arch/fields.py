@@ -72,9 +72,7 @@ def _inputs(variant, g):
 
 
 def _snapshot_times(case, dt):
-    steps = sorted(int(re.search(r"_(\d+)\.dump$", p).group(1)) for p in glob.glob(os.path.join(case, "post", "cg",
-                                                                                                    "particles_*.dump")))
-    return [s * dt for s in steps]
+    return [s * dt for s, _ in gc.dem.numbered(os.path.join(case, "post", "cg", "particles_*.dump"))]
 
 
 def _reduce(f, variant):

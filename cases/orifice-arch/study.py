@@ -241,8 +241,8 @@ def discharge(a, variant, R_d):
         s0 = s1
     print(f"orifice-arch {name}: {len(plan)} segments of {st['seg']} steps ({st['seg'] * v['DT'] / P.T_D:.3g} t_d), "
           f"dt = {v['DT']:.4g} s, CG {'on' if cg_on else 'off'}", flush=True)
-    cpu, skipped = gc.runner.chain(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
-    out = dict(cpu_s=cpu, skipped_segments=skipped)
+    rec = gc.chunks.liggghts(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
+    out = dict(cpu_s=sum(c["cpu_s"] for c in rec["chunks"][len(rec["chunks"]) - rec["ran"]:]))
     out.update(flow(a, variant, R_d, case))
     if cg_on:
         out["fields"] = fields.compute(a, variant, R_d, case, g, v["DT"], st, keep_dumps=a.keep_dumps)
@@ -253,18 +253,14 @@ def discharge(a, variant, R_d):
 # ------------------------------------------------------------------ flow rates
 def counts(case, n_segments):
     """The counts of a run's segments in order: {step, atoms, fed, removed, below} (ints)."""
-    rows = []
-    for k in range(1, n_segments + 1):
-        path = os.path.join(case, "post", f"counts_{k}.txt")
+    paths = [os.path.join(case, "post", f"counts_{k}.txt") for k in range(1, n_segments + 1)]
+    for k, path in enumerate(paths, 1):
         if not os.path.exists(path):
             raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
-        with open(path) as fh:
-            rows += [[int(round(float(x))) for x in ln.split()] for ln in fh if ln.strip() and not ln.startswith("#")]
-    rows = np.array(sorted({r[0]: r for r in rows}.values()))
-    out = {k: rows[:, i] for i, k in enumerate(("step", "atoms", "fed", "removed", "below"))}
+    out = {k: np.rint(x).astype(int) for k, x in gc.dem.read_print(paths, ("step", "atoms", "fed", "removed", "below")).items()}
     # the strays each segment deleted at its start (template/dem/in.liggghts) are removed too:
     # segment k's counts carry those of segments 1..k
-    stray = np.zeros(len(rows), dtype=int)
+    stray = np.zeros(len(out["step"]), dtype=int)
     for k, s0 in enumerate(segment_starts(case, n_segments), 1):
         stray[out["step"] > s0] += strays(case, k)
     out["stray"] = stray
@@ -328,7 +324,7 @@ def flow(a, variant, R_d, case):
     n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
     w = steady * P.MASS
     k_fit = (2 * v["R"] - (w / (P.BEVERLOO_C * rho_b * math.sqrt(P.G) * length)) ** (1 / n_exp)) / P.D
-    cpu, wall, nseg = gc.runner.chain_cost(case)
+    cpu, wall, nseg = gc.chunks.cost(case, "segment")
     last = {k: int(x[-1]) for k, x in c.items()}
     in_silo = last["atoms"] - last["below"]
     keys = [("run", name), ("R_over_d", R_d), ("outlet_width_m", 2 * v["R"]), ("dt_s", v["DT"]), ("t_d_s", P.T_D),

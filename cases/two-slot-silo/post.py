@@ -98,14 +98,6 @@ def accounting(v, run, fill):
 
 
 # --- flow rate -------------------------------------------------------------------
-def window_rates(t, m, t0, t_end):
-    """Mass flow [kg/s] in each whole 200 ms window from t0."""
-    return gc.outlet.window_rates(t, m, t0, t_end, P.WINDOW)
-
-
-mean_sd = gc.outlet.mean_sd
-
-
 def flow(v, L, run, t_end):
     """Mass flow through the outlet plane: 200 ms windows from the steady start
     (mean, SD over windows), per opening (the crossings left and right of the
@@ -113,10 +105,10 @@ def flow(v, L, run, t_end):
     _, t, d, x = events(run, "crossings", with_x=True)
     m = P.RHO_P * math.pi / 6 * d ** 3
     t0 = v["STEADY_FROM"]
-    rates = window_rates(t, m, t0, t_end)
-    mean, sd = mean_sd(rates)
+    rates = gc.outlet.window_rates(t, m, t0, t_end, P.WINDOW)       # mass flow [kg/s] in each whole window from t0
+    mean, sd = gc.outlet.mean_sd(rates)
     sides = [np.ones_like(x, bool)] if L == P.SINGLE else [x < 0, x >= 0]
-    per = [mean_sd(window_rates(t[s], m[s], t0, t_end)) for s in sides]
+    per = [gc.outlet.mean_sd(gc.outlet.window_rates(t[s], m[s], t0, t_end, P.WINDOW)) for s in sides]
     edges = np.arange(0.0, t_end + 1e-9, 0.02)
     series = np.histogram(t, edges, weights=m)[0] / 0.02
     return dict(windows=rates.tolist(), window_start=t0, mean=mean, sd=sd, n_windows=int(rates.size),
@@ -130,7 +122,7 @@ def cg_run(v, run, stem, lo, hi, log, last_only=False):
     lo..hi (XZ, Gaussian w = d), the four walls as planes; last_only: the last snapshot.
     Returns (CPU seconds, the snapshots' steps)."""
     dumps = os.path.join(run, "post", "cg")
-    steps = sorted(int(re.search(r"_(\d+)\.dump$", p).group(1)) for p in glob.glob(os.path.join(dumps, "particles_*.dump")))
+    steps = [s for s, _ in gc.dem.numbered(os.path.join(dumps, "particles_*.dump"))]
     if not steps:
         raise gc.CaseError(f"{dumps}: no CG snapshots (particles_*.dump)")
     opts = [("particles", "post/cg/particles_*.dump"), ("pairs", "post/cg/pairs_*.dump"),
