@@ -164,7 +164,10 @@ def simulate(name, run, v, out, fresh):
                     nrem0=s["orphans"], mrem0=repr(s["orphans_kg"]))
 
     def collect(case, k):
-        flow = post_flow_last(os.path.join(case, "post", f"flow_{k:03d}.txt"))
+        flow = post.read_flow([os.path.join(case, "post", f"flow_{k:03d}.txt")])
+        if not len(flow["step"]):
+            raise gc.CaseError(f"{case}/post/flow_{k:03d}.txt: no rows (did the chunk run?)")
+        flow = {c: x[-1] for c, x in flow.items()}
         with open(os.path.join(case, "post", f"orphans_{k:03d}.txt")) as fh:
             n, m = fh.read().split()[:2]
         print(f"corn-silo {name}: t = {upto[k] * v['DT']:.2f} of {v['DISCHARGE_S']:.2f} s, "
@@ -172,13 +175,6 @@ def simulate(name, run, v, out, fresh):
         return dict(step=upto[k], ndis=int(flow["discharged"]), orphans=int(float(n)), orphans_kg=float(m))
     gc.chunks.liggghts(run, "dem/in.liggghts", segment, "post/fill.restart", "discharge", f"corn-silo {name}", collect)
     return post.run(name, run, v, read_state(run), out)
-
-
-def post_flow_last(path):
-    rows = post.read_flow([path])
-    if not len(rows["step"]):
-        raise gc.CaseError(f"{path}: no rows (did the chunk run?)")
-    return {k: rows[k][-1] for k in rows}
 
 
 def finished(name, run, v, out):

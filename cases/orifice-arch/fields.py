@@ -71,10 +71,6 @@ def _inputs(variant, g):
     return o
 
 
-def _snapshot_times(case, dt):
-    return [s * dt for s, _ in gc.dem.numbered(os.path.join(case, "post", "cg", "particles_*.dump"))]
-
-
 def _reduce(f, variant):
     """The fields the study keeps: coordinates, density, solid fraction, velocity, contact and
     kinetic P and sqrt(J2)."""
@@ -169,7 +165,8 @@ def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
     t_from, t_to = st["avg_from"] * dt, st["total"] * dt
     cpu, costs, rows = 0.0, [], []
     have_dumps = os.path.isdir(os.path.join(case, "post", "cg"))
-    snaps = [t for t in _snapshot_times(case, dt) if t_from - 1e-9 <= t <= t_to + 1e-9] if have_dumps else []
+    snaps = [s * dt for s, _ in gc.dem.numbered(os.path.join(case, "post", "cg", "particles_*.dump"))
+             if t_from - 1e-9 <= s * dt <= t_to + 1e-9] if have_dumps else []
     base = [("dt", dt)] + _inputs(variant, g)
 
     def run(stem, opts, label):

@@ -251,13 +251,16 @@ def discharge(a, variant, R_d):
 
 
 # ------------------------------------------------------------------ flow rates
+COUNTS = ("step", "atoms", "fed", "removed", "below")         # the columns of post/counts_<k>.txt
+
+
 def counts(case, n_segments):
     """The counts of a run's segments in order: {step, atoms, fed, removed, below} (ints)."""
     paths = [os.path.join(case, "post", f"counts_{k}.txt") for k in range(1, n_segments + 1)]
     for k, path in enumerate(paths, 1):
         if not os.path.exists(path):
             raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
-    out = {k: np.rint(x).astype(int) for k, x in gc.dem.read_print(paths, ("step", "atoms", "fed", "removed", "below")).items()}
+    out = {k: np.rint(x).astype(int) for k, x in gc.dem.read_print(paths, COUNTS).items()}
     # the strays each segment deleted at its start (template/dem/in.liggghts) are removed too:
     # segment k's counts carry those of segments 1..k
     stray = np.zeros(len(out["step"]), dtype=int)
@@ -281,12 +284,8 @@ def strays(case, k):
 
 def segment_starts(case, n_segments):
     """The first step of each segment: the step of its restart (the previous one's last count)."""
-    starts = [0]
-    for k in range(1, n_segments):
-        with open(os.path.join(case, "post", f"counts_{k}.txt")) as fh:
-            last = [ln for ln in fh if ln.strip() and not ln.startswith("#")][-1]
-        starts.append(int(round(float(last.split()[0]))))
-    return starts
+    return [0] + [int(gc.dem.read_print([os.path.join(case, "post", f"counts_{k}.txt")], COUNTS)["step"][-1])
+                  for k in range(1, n_segments)]
 
 
 def flow(a, variant, R_d, case):

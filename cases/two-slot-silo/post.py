@@ -227,12 +227,6 @@ def load(out, f, L):
         return json.load(fh)
 
 
-def fit_phi_I(pts):
-    """phi = a1 / (1 + a2 I) over [(I, phi)] (gc.fits.phi_of_I)."""
-    i, phi = np.asarray(pts).reshape(-1, 2).T
-    return gc.fits.phi_of_I(i, phi)
-
-
 def study(a, runs, geoms, c):
     """Tables, figures, level.json and checks over every finished run."""
     res, rho_b = {}, {}
@@ -403,7 +397,7 @@ def plot_phi_I(a, res):
             continue
         i, phi = np.asarray(pts).T
         ax.plot(i, phi, ".", ms=2, color=COLOURS[f], alpha=0.3)
-        a1, a2 = fit_phi_I(pts)
+        a1, a2 = gc.fits.phi_of_I(i, phi)
         ii = np.linspace(P.I_FIT_MIN, max(i), 50)
         ax.plot(ii, a1 / (1 + a2 * ii), color=COLOURS[f], label=f"{f}: a1 = {a1:.3f}, a2 = {a2:.3f} ({len(pts)} points)")
         lines.append((f, a1, a2, len(pts)))

@@ -1,13 +1,6 @@
-"""The driver of a DEM study of many stand-alone LIGGGHTS runs (cases/corn-silo,
-two-slot-silo, orifice-arch; docs/cases.md "A study of many runs"): fills run
-once, runs resume (their chunks: gc.chunks), --jobs of them at a time, and
---setup-only / --post-only mean the same in every such study.
-
-    options(ap, fresh=False, post_only=True)   --jobs, --post-only (and --fresh) on a gc.cli parser
-    a = parse(ap, default_out)                 gc.cli.parse; one rank a run, --jobs >= 1
-    rec = once(path, fn, needs=())             a stage run once (a fill): fn()'s dict kept at path
-    done = drive(a, label, fills, runs)        the stages: [(name, setup, simulate[, post])]
-"""
+"""The driver of a study of many stand-alone LIGGGHTS runs (cases/corn-silo,
+two-slot-silo, orifice-arch; docs/cases.md "A study of many runs"): the options,
+a fill run once, the fills and runs --jobs at a time, --setup-only, --post-only."""
 import json
 import os
 import time
@@ -36,10 +29,9 @@ def parse(ap, default_out, argv=None):
 
 
 def once(path, fn, needs=()):
-    """A stage that runs once, e.g. a fill: fn() returns a dict (its CPU seconds and
-    what the study keeps), saved at path (JSON) with wall_s, the stage's wall seconds.
-    While path and every file of needs (the stage's restart) exist, a later call
-    returns the saved dict instead of running it again. Returns (dict, ran now)."""
+    """A stage run once (a fill): fn()'s dict (CPU s, what the study keeps) saved at path
+    (JSON) with its wall_s; while path and the files of needs (its restart) exist, a later
+    call returns that instead. Returns (dict, ran now)."""
     if os.path.exists(path) and all(os.path.exists(p) for p in needs):
         with open(path) as fh:
             return json.load(fh), False
@@ -53,14 +45,11 @@ def once(path, fn, needs=()):
 
 
 def drive(a, label, fills, runs):
-    """The study's stages: fills and runs are lists of (name, setup, simulate[, post]).
-    setup() writes the stage's folder from the template and runs nothing (--setup-only);
-    simulate() sets up what has not started (a started folder keeps its own), runs what
-    is left and returns its result (a dict, cpu_s in it for the pool's line); post()
-    post-processes a finished run (its result, or None). --setup-only (a.setup_only):
-    every setup (returns None); --post-only (a.post_only): the runs' post() only; else
-    every fill, then every run, a.jobs at a time (gc.runner.pool: the first failure
-    stops the study). Returns {name: result} of the runs."""
+    """fills and runs: [(name, setup, simulate[, post])]. setup() writes the folder and
+    runs nothing; simulate() sets up what has not started, runs what is left and returns
+    its result (cpu_s in it for the pool's line); post() post-processes a finished run.
+    --setup-only: every setup (returns None); --post-only: the runs' post(); else every
+    fill, then every run, a.jobs at a time (gc.runner.pool). Returns {name: result}."""
     if a.setup_only:
         for stage in fills + runs:
             stage[1]()
