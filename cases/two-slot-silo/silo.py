@@ -149,8 +149,8 @@ def fill_cost(fill):
 
 def record_file(run):
     """What marks a run's progress: log/discharge.json (gc.chunks), cost.json in a run of an older study.py."""
-    old = os.path.join(run, "cost.json")
-    return old if os.path.exists(old) else os.path.join(run, "log", "discharge.json")
+    new, old = os.path.join(run, "log", "discharge.json"), os.path.join(run, "cost.json")
+    return old if os.path.exists(old) and not os.path.exists(new) else new
 
 
 def cost(run):
@@ -186,6 +186,7 @@ def run_stage(v, L, run, fill, progress=print):
     def simulate():
         if not os.path.exists(record_file(run)):
             setup()
-        gc.chunks.loop(run, step, "discharge")
+        if not finished(v, run):        # (the record untouched: post.run keeps a newer post-processing)
+            gc.chunks.loop(run, step, "discharge")
         return cost(run)
     return setup, simulate

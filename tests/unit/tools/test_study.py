@@ -46,6 +46,7 @@ with quiet:
     done = study.drive(args(post_only=True), "t", stages(calls, "f", 2), stages(calls, "r", 3))
     expect("post-only: the runs' post only", sorted(calls), [("post", f"r{k}") for k in range(3)])
     expect("post-only results", done, {f"r{k}": f"r{k}" for k in range(3)})
+    expect("post-only, runs without post()", study.drive(args(post_only=True), "t", [], [s[:3] for s in stages([], "r", 2)]), {})
 
     calls = []
     done = study.drive(args(jobs=2), "t", stages(calls, "f", 2), stages(calls, "r", 3))
