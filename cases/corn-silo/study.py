@@ -132,6 +132,7 @@ def simulate(name, run, v, out, fresh):
     """The folder (setup), the fill (if not done) and the discharge chunks still to run;
     post-processes the run."""
     setup(run, v, fresh)
+
     def fill():
         for f in os.listdir(os.path.join(run, "post")):
             os.remove(os.path.join(run, "post", f))
