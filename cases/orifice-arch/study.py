@@ -166,10 +166,12 @@ def render(variant, dst, v, common, own):
 
 
 # ------------------------------------------------------------------ stages
-def fill_folder(a, variant):
-    """The fill's folder (--setup-only): the loose packing, the scripts. Returns (the
-    particles packed, the packing's CPU seconds)."""
+def fill_folder(a, variant, keep=False):
+    """The fill's folder (--setup-only: keep, a finished fill is kept): the loose packing,
+    the scripts. Returns (the particles packed, the packing's CPU seconds)."""
     v, g = values(a.size, variant)
+    if keep and os.path.exists(os.path.join(a.out, "runs", variant, "fill", "dem", "fill.restart")):
+        return None
     case = gc.runner.clean(os.path.join(a.out, "runs", variant, "fill"))
     c0 = time.process_time()
     atoms = packing(g, a.seed)
@@ -414,7 +416,7 @@ def main():
             ap.error(f"--R {a.R}: none of the {var} outlets {P.SIZES[a.size][var]['R']} of size {a.size}")
     print(f"orifice-arch: size {a.size}, {', '.join(f'{k} R = {v}' for k, v in wanted.items())} d; out {a.out}",
           flush=True)
-    fills = [(f"{var} fill", partial(fill_folder, a, var), partial(fill, a, var)) for var in wanted]
+    fills = [(f"{var} fill", partial(fill_folder, a, var, True), partial(fill, a, var)) for var in wanted]
     runs = [(run_name(var, R_d), partial(run_folder, a, var, R_d), partial(discharge, a, var, R_d))
             for var, rs in wanted.items() for R_d in rs]
     if gc.study.drive(a, "orifice-arch", fills, runs) is None:
