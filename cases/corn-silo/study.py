@@ -31,7 +31,7 @@ import json
 import math
 import os
 import shutil
-import time
+from functools import partial
 
 import granair_cases as gc
 import geometry
@@ -128,10 +128,12 @@ def setup(run, v, fresh):
     gc.template.save_values(saved, v)
 
 
-def simulate(name, run, v):
-    """Fill (if not done) and the discharge chunks still to run; returns the state."""
-    if read_state(run) is None:
-        t0 = time.time()
+def simulate(name, run, v, out, fresh):
+    """The folder (setup), the fill (if not done) and the discharge chunks still to run;
+    post-processes the run."""
+    setup(run, v, fresh)
+
+    def fill():
         for f in os.listdir(os.path.join(run, "post")):
             os.remove(os.path.join(run, "post", f))
         shutil.rmtree(os.path.join(run, "restart"), ignore_errors=True)     # and the chunks of an earlier fill
@@ -142,7 +144,9 @@ def simulate(name, run, v):
         if not settled:
             raise gc.CaseError(f"{run}/log/log.fill: the fill did not report settling")
         print(f"corn-silo {name}: {settled[-1]} ({cpu:.0f} s CPU)", flush=True)
-        gc.template.write(os.path.join(run, "post", "fill.json"), json.dumps(dict(cpu_fill_s=cpu, wall_s=time.time() - t0)))
+        return dict(cpu_fill_s=cpu)
+    if read_state(run) is None:
+        gc.study.once(os.path.join(run, "post", "fill.json"), fill)
     total, chunk, upto = v["DISCHARGE_STEPS"], v["DISCHARGE_CHUNK_STEPS"], {}
 
     def segment(k, rec):
@@ -161,32 +165,23 @@ def simulate(name, run, v):
                     nrem0=s["orphans"], mrem0=repr(s["orphans_kg"]))
 
     def collect(case, k):
-        flow = post_flow_last(os.path.join(case, "post", f"flow_{k:03d}.txt"))
+        flow = post.read_flow([os.path.join(case, "post", f"flow_{k:03d}.txt")])
+        if not len(flow["step"]):
+            raise gc.CaseError(f"{case}/post/flow_{k:03d}.txt: no rows (did the chunk run?)")
+        flow = {c: x[-1] for c, x in flow.items()}
         with open(os.path.join(case, "post", f"orphans_{k:03d}.txt")) as fh:
             n, m = fh.read().split()[:2]
         print(f"corn-silo {name}: t = {upto[k] * v['DT']:.2f} of {v['DISCHARGE_S']:.2f} s, "
               f"{int(flow['discharged'])} grains discharged", flush=True)
         return dict(step=upto[k], ndis=int(flow["discharged"]), orphans=int(float(n)), orphans_kg=float(m))
     gc.chunks.liggghts(run, "dem/in.liggghts", segment, "post/fill.restart", "discharge", f"corn-silo {name}", collect)
-    return read_state(run)
+    return post.run(name, run, v, read_state(run), out)
 
 
-def post_flow_last(path):
-    rows = post.read_flow([path])
-    if not len(rows["step"]):
-        raise gc.CaseError(f"{path}: no rows (did the chunk run?)")
-    return {k: rows[k][-1] for k in rows}
-
-
-def one(name, run, v, a, out):
-    """One run: simulate what is left, post-process it."""
-    if not a.post_only:
-        state = simulate(name, run, v)
-    else:
-        state = read_state(run)
-        if state is None or state["step"] < v["DISCHARGE_STEPS"]:
-            return None
-    return post.run(name, run, v, state, out)
+def finished(name, run, v, out):
+    """--post-only: post-process the run if it is finished (else None)."""
+    state = read_state(run)
+    return post.run(name, run, v, state, out) if state and state["step"] >= v["DISCHARGE_STEPS"] else None
 
 
 def main():
@@ -196,34 +191,31 @@ def main():
                          "demo: 8000 grains, 1 s, 10 and 35 deg; test: 8000 grains, 0.2 s, 27 deg")
     ap.add_argument("--angles", type=float, nargs="+", help="hopper angles [deg from the horizontal] (default: the size's)")
     ap.add_argument("--seeds", type=int, help=f"runs per angle, 1-{len(P.SEEDS)} (default: the size's)")
-    ap.add_argument("--jobs", type=int, default=2, help="runs at a time, one rank each (default 2)")
     ap.add_argument("--youngs", type=float, default=P.YOUNGS, help=f"corn Young's modulus [Pa] (default {P.YOUNGS:g})")
     ap.add_argument("--discharge", type=float, help="discharge time [s] (default: the size's)")
-    ap.add_argument("--post-only", action="store_true", help="post-process the finished runs only (nothing is run)")
-    ap.add_argument("--fresh", action="store_true", help="start every run again (default: resume)")
+    gc.study.options(ap, fresh=True)
     size = P.SIZES[ap.parse_known_args()[0].size]
-    a = gc.cli.parse(ap, os.path.join(HERE, OUTS[ap.parse_known_args()[0].size]))
+    a = gc.study.parse(ap, os.path.join(HERE, OUTS[ap.parse_known_args()[0].size]))
     angles = [int(x) if float(x).is_integer() else x for x in (a.angles or size["angles"])]
     seeds = a.seeds or size["seeds"]
     discharge = a.discharge or size["discharge"]
     bad = [x for x in angles if not 0 < x < 90]
-    if bad or not 1 <= seeds <= len(P.SEEDS) or a.jobs < 1 or not a.youngs > 0 or not discharge > 0 or a.np != 1:
-        ap.error(f"--angles {bad or angles} (0-90 deg), --seeds {seeds} (1-{len(P.SEEDS)}), --jobs {a.jobs} (>= 1), "
-                 f"--youngs {a.youngs} (> 0), --discharge {discharge} (> 0), --np {a.np} (1: LIGGGHTS runs serially)")
+    if bad or not 1 <= seeds <= len(P.SEEDS) or not a.youngs > 0 or not discharge > 0:
+        ap.error(f"--angles {bad or angles} (0-90 deg), --seeds {seeds} (1-{len(P.SEEDS)}), "
+                 f"--youngs {a.youngs} (> 0), --discharge {discharge} (> 0)")
     print(f"corn-silo: {size['grains']} grains, {discharge:g} s of discharge, angles {', '.join(map(str, angles))} deg, "
           f"{seeds} run(s) each, E = {a.youngs:.3g} Pa, {a.jobs} at a time, results in {a.out}", flush=True)
-    tasks = []
+    runs = []
     for k in range(seeds):          # seed-major: a study stopped early still has every angle
         for angle in angles:
             name = f"a{angle}-s{k + 1}"
             v = numbers(size["grains"], discharge, angle, k, a.youngs)
             run = os.path.join(a.out, "runs", name)
-            if not a.post_only:
-                setup(run, v, a.fresh)
-            tasks.append((name, one, (name, run, v, a, a.out)))
-    if a.setup_only:
-        return print(f"corn-silo: {len(tasks)} run folders written to {os.path.join(a.out, 'runs')}")
-    done = gc.runner.pool(tasks, a.jobs, "corn-silo")
+            runs.append((name, partial(setup, run, v, a.fresh), partial(simulate, name, run, v, a.out, a.fresh),
+                         partial(finished, name, run, v, a.out)))
+    done = gc.study.drive(a, "corn-silo", [], runs)
+    if done is None:
+        return
     c = gc.checks.Checks(f"corn-silo {os.path.basename(a.out)}")
     post.study(a.out, {n: r for n, r in done.items() if r}, angles, seeds, size, c)
     c.report(enforce=a.check)

@@ -71,12 +71,6 @@ def _inputs(variant, g):
     return o
 
 
-def _snapshot_times(case, dt):
-    steps = sorted(int(re.search(r"_(\d+)\.dump$", p).group(1)) for p in glob.glob(os.path.join(case, "post", "cg",
-                                                                                                    "particles_*.dump")))
-    return [s * dt for s in steps]
-
-
 def _reduce(f, variant):
     """The fields the study keeps: coordinates, density, solid fraction, velocity, contact and
     kinetic P and sqrt(J2)."""
@@ -86,10 +80,6 @@ def _reduce(f, variant):
     return {ax: f[ax], "z": f["z"], "density": f["density"], "volume_fraction": f["volume_fraction"],
             f"velocity_{ax}": f[f"velocity_{ax}"], "velocity_z": f["velocity_z"], "p_contact": pc,
             "tau_contact": tc, "p_kinetic": pk, "tau_kinetic": tk}
-
-
-def _write_reduced(path, red, variant):
-    gc.cg_grids.write(path, red, "r" if variant == "silo" else "x")
 
 
 def read_reduced(path, variant):
@@ -171,7 +161,8 @@ def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
     t_from, t_to = st["avg_from"] * dt, st["total"] * dt
     cpu, costs, rows = 0.0, [], []
     have_dumps = os.path.isdir(os.path.join(case, "post", "cg"))
-    snaps = [t for t in _snapshot_times(case, dt) if t_from - 1e-9 <= t <= t_to + 1e-9] if have_dumps else []
+    snaps = [s * dt for s, _ in gc.dem.numbered(os.path.join(case, "post", "cg", "particles_*.dump"))
+             if t_from - 1e-9 <= s * dt <= t_to + 1e-9] if have_dumps else []
     base = [("dt", dt)] + _inputs(variant, g)
 
     def run(stem, opts, label):
@@ -186,6 +177,14 @@ def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
         costs.append((label, c))
         print(f"orifice-arch {name}: CG {label}: {c:.0f} CPU-s", flush=True)
 
+    def reduced(stem):
+        """OUT/fields/<stem>.csv, the kept fields of the run's post/fields/<stem>.csv (made once)."""
+        path = os.path.join(out, stem + ".csv")
+        if not os.path.exists(path):
+            gc.cg_grids.write(path, _reduce(gc.cg.read(os.path.join(case, "post", "fields", stem + ".csv")), variant),
+                              "r" if variant == "silo" else "x")
+        return read_reduced(path, variant)
+
     for kind, w_d in cfg["kernels"]:
         w, h, reach = _kernel_grid(kind, w_d)
         tag = _tag(kind, w_d)
@@ -193,11 +192,7 @@ def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
         opts = dict(win, kernel=kind, width=w, spacing=h)
         opts.update({"from": t_from, "to": t_to})
         run(f"post/fields/{name}_{tag}", opts, f"{tag}, whole window, {len(snaps) or '?'} snapshots")
-        red_path = os.path.join(out, f"{name}_{tag}.csv")
-        if not os.path.exists(red_path):
-            _write_reduced(red_path, _reduce(gc.cg.read(os.path.join(case, f"post/fields/{name}_{tag}.csv")), variant),
-                           variant)
-        red = read_reduced(red_path, variant)
+        red = reduced(f"{name}_{tag}")
         alpha, se_fit = fit_alpha(*arch(red, variant, R), R)
         blocks = []
         n_b = cfg["block_count"]
@@ -211,10 +206,7 @@ def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
                 bopts.update({"from": float(chunk[0]) - 1e-9, "to": float(chunk[-1]) + 1e-9})
                 stem = f"post/fields/{name}_{tag}_block{b + 1}"
                 run(stem, bopts, f"{tag}, block {b + 1}/{n_b} ({len(chunk)} snapshots)")
-                bpath = os.path.join(out, f"{name}_{tag}_block{b + 1}.csv")
-                if not os.path.exists(bpath):
-                    _write_reduced(bpath, _reduce(gc.cg.read(os.path.join(case, stem + ".csv")), variant), variant)
-                blocks.append(fit_alpha(*arch(read_reduced(bpath, variant), variant, R), R)[0])
+                blocks.append(fit_alpha(*arch(reduced(f"{name}_{tag}_block{b + 1}"), variant, R), R)[0])
         bl = np.array(blocks)
         se_block = float(np.std(bl, ddof=1) / math.sqrt(len(bl))) if len(bl) >= 2 and np.all(np.isfinite(bl)) \
             else math.nan

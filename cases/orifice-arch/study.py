@@ -35,8 +35,8 @@ enclosing every particle equals their mass within MASS_INTEGRAL_TOL.
 import math
 import os
 import random
-import shutil
 import time
+from functools import partial
 
 import numpy as np
 
@@ -166,45 +166,66 @@ def render(variant, dst, v, common, own):
 
 
 # ------------------------------------------------------------------ stages
-def fill(a, variant):
-    """The fill of a geometry (skipped when its restart exists): packing, settling,
-    the settled top and bulk density. Returns its summary dict."""
+def fill_folder(a, variant, keep=False):
+    """The fill's folder (--setup-only: keep, a finished fill is kept): the loose packing,
+    the scripts. Returns (the particles packed, the packing's CPU seconds)."""
     v, g = values(a.size, variant)
-    case = os.path.join(a.out, "runs", variant, "fill")
-    summary = os.path.join(case, "summary.txt")
-    if os.path.exists(summary) and os.path.exists(os.path.join(case, "dem", "fill.restart")):
-        return dict(gc.series.read_keys(summary), skipped=1)
-    gc.runner.clean(case)
-    t0, c0 = time.time(), time.process_time()
+    if keep and os.path.exists(os.path.join(a.out, "runs", variant, "fill", "dem", "fill.restart")):
+        return None
+    case = gc.runner.clean(os.path.join(a.out, "runs", variant, "fill"))
+    c0 = time.process_time()
     atoms = packing(g, a.seed)
     top = max(z for _, _, z, _ in atoms) + g["d"]
     render(variant, case, v, ["dem/in.fill", "dem/in.materials", "dem/floor-closed.liggghts"], ["dem/geometry.liggghts"])
     gc.dem.write_data(os.path.join(case, "dem", "packing.data"), atoms,
                       (-g["half_x"], g["half_x"], -g["half_y"], g["half_y"], g["z_lo"], max(g["z_hi"], top)), P.RHO_P,
                       f"orifice-arch {variant} loose packing: {len(atoms)} spheres of d = {g['d']} m (study.py)")
-    pack_cpu = time.process_time() - c0
-    if a.setup_only:
-        return {}
-    print(f"orifice-arch {variant} fill: {len(atoms)} particles packed ({pack_cpu:.0f} CPU-s), settling", flush=True)
-    cpu = gc.runner.run(["liggghts", "-in", "dem/in.fill", "-log", "log/fill.liggghts", "-screen", "log/fill.screen"],
-                        case, "fill", parallel=False)
-    with open(os.path.join(case, "log", "fill.liggghts")) as fh:
-        settled = [ln.strip() for ln in fh if ln.startswith("granair fill:")][-1]
-    dump = gc.dem.read_dump(os.path.join(case, "dem", "fill.dump"))
-    area = math.pi * g["R_s"] ** 2 if variant == "silo" else g["width"] * 2 * g["half_gap"]
-    rho_b, top = gc.outlet.bulk_density(dump["z"], dump["mass"], area, g["d"], k_top=200 if variant == "silo" else 20)
-    keys = [("variant", variant), ("particles_packed", len(atoms)), ("settled", settled), ("settled_top_m", top),
-            ("settled_top_d", top / g["d"]), ("bulk_density_kg_m3", rho_b), ("solid_fraction", rho_b / P.RHO_P),
-            ("packing_cpu_s", round(pack_cpu, 2)), ("fill_cpu_s", round(cpu, 2)), ("fill_wall_s", round(time.time() - t0))]
-    gc.series.write_keys(summary, keys, f"orifice-arch {variant} fill (study.py); bulk density between 2 d and "
-                         "2 d below the top (the monolayer: per unit volume of the gap)")
-    print(f"orifice-arch {variant} fill: {settled}; bulk density {rho_b:.1f} kg/m3 (solid fraction "
-          f"{rho_b / P.RHO_P:.3f}), {cpu:.0f} CPU-s", flush=True)
-    return dict(gc.series.read_keys(summary), skipped=0)
+    return len(atoms), time.process_time() - c0
+
+
+def fill(a, variant):
+    """The fill of a geometry, run once (gc.study.once: log/fill.json and the restart):
+    its folder, the settling, the settled top and bulk density (summary.txt). Returns
+    the summary's dict."""
+    case = os.path.join(a.out, "runs", variant, "fill")
+    summary = os.path.join(case, "summary.txt")
+
+    def run():
+        t0 = time.time()
+        n, pack_cpu = fill_folder(a, variant)
+        g = geometry(a.size, variant)
+        print(f"orifice-arch {variant} fill: {n} particles packed ({pack_cpu:.0f} CPU-s), settling", flush=True)
+        cpu = gc.runner.liggghts(case, "dem/in.fill", "fill")
+        with open(os.path.join(case, "log", "fill.liggghts")) as fh:
+            settled = [ln.strip() for ln in fh if ln.startswith("granair fill:")][-1]
+        dump = gc.dem.read_dump(os.path.join(case, "dem", "fill.dump"))
+        area = math.pi * g["R_s"] ** 2 if variant == "silo" else g["width"] * 2 * g["half_gap"]
+        rho_b, top = gc.outlet.bulk_density(dump["z"], dump["mass"], area, g["d"], k_top=200 if variant == "silo" else 20)
+        keys = [("variant", variant), ("particles_packed", n), ("settled", settled), ("settled_top_m", top),
+                ("settled_top_d", top / g["d"]), ("bulk_density_kg_m3", rho_b), ("solid_fraction", rho_b / P.RHO_P),
+                ("packing_cpu_s", round(pack_cpu, 2)), ("fill_cpu_s", round(cpu, 2)), ("fill_wall_s", round(time.time() - t0))]
+        gc.series.write_keys(summary, keys, f"orifice-arch {variant} fill (study.py); bulk density between 2 d and "
+                             "2 d below the top (the monolayer: per unit volume of the gap)")
+        print(f"orifice-arch {variant} fill: {settled}; bulk density {rho_b:.1f} kg/m3 (solid fraction "
+              f"{rho_b / P.RHO_P:.3f}), {cpu:.0f} CPU-s", flush=True)
+        return dict(gc.series.read_keys(summary), cpu_s=cpu)
+    return gc.study.once(os.path.join(case, "log", "fill.json"), run, [os.path.join(case, "dem", "fill.restart")])[0]
 
 
 def run_name(variant, R_d):
     return f"{variant}_R{R_d:g}"
+
+
+def run_folder(a, variant, R_d):
+    """The folder of one discharge run (--setup-only; a started run's restarts kept): the
+    scripts and its walls."""
+    v, g = values(a.size, variant, R_d)
+    case = os.path.join(a.out, "runs", variant, f"R{R_d:g}")
+    os.makedirs(os.path.join(case, "post"), exist_ok=True)
+    render(variant, case, v, ["dem/in.liggghts", "dem/in.materials"], ["dem/geometry.liggghts", "dem/floor-open.liggghts"])
+    gc.template.write(os.path.join(case, "dem", "bottom.stl"), floor_stl(g, v["R"]))
+    gc.template.write(os.path.join(case, "dem", "sink.stl"), sink_stl(g))
+    return case
 
 
 def discharge(a, variant, R_d):
@@ -213,13 +234,7 @@ def discharge(a, variant, R_d):
     v, g = values(a.size, variant, R_d)
     st = steps(a.size)
     name = run_name(variant, R_d)
-    case = os.path.join(a.out, "runs", variant, f"R{R_d:g}")
-    os.makedirs(os.path.join(case, "post"), exist_ok=True)
-    render(variant, case, v, ["dem/in.liggghts", "dem/in.materials"], ["dem/geometry.liggghts", "dem/floor-open.liggghts"])
-    gc.template.write(os.path.join(case, "dem", "bottom.stl"), floor_stl(g, v["R"]))
-    gc.template.write(os.path.join(case, "dem", "sink.stl"), sink_stl(g))
-    if a.setup_only:
-        return {}
+    case = run_folder(a, variant, R_d)
     cg_on = R_d in P.SIZES[a.size][variant]["cg"]
     plan, s0 = [], 0
     while s0 < st["total"]:
@@ -228,8 +243,8 @@ def discharge(a, variant, R_d):
         s0 = s1
     print(f"orifice-arch {name}: {len(plan)} segments of {st['seg']} steps ({st['seg'] * v['DT'] / P.T_D:.3g} t_d), "
           f"dt = {v['DT']:.4g} s, CG {'on' if cg_on else 'off'}", flush=True)
-    cpu, skipped = gc.runner.chain(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
-    out = dict(cpu_s=cpu, skipped_segments=skipped)
+    rec = gc.chunks.liggghts(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
+    out = dict(cpu_s=sum(c["cpu_s"] for c in rec["chunks"][len(rec["chunks"]) - rec["ran"]:]))
     out.update(flow(a, variant, R_d, case))
     if cg_on:
         out["fields"] = fields.compute(a, variant, R_d, case, g, v["DT"], st, keep_dumps=a.keep_dumps)
@@ -238,20 +253,19 @@ def discharge(a, variant, R_d):
 
 
 # ------------------------------------------------------------------ flow rates
+COUNTS = ("step", "atoms", "fed", "removed", "below")         # the columns of post/counts_<k>.txt
+
+
 def counts(case, n_segments):
     """The counts of a run's segments in order: {step, atoms, fed, removed, below} (ints)."""
-    rows = []
-    for k in range(1, n_segments + 1):
-        path = os.path.join(case, "post", f"counts_{k}.txt")
+    paths = [os.path.join(case, "post", f"counts_{k}.txt") for k in range(1, n_segments + 1)]
+    for k, path in enumerate(paths, 1):
         if not os.path.exists(path):
             raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
-        with open(path) as fh:
-            rows += [[int(round(float(x))) for x in ln.split()] for ln in fh if ln.strip() and not ln.startswith("#")]
-    rows = np.array(sorted({r[0]: r for r in rows}.values()))
-    out = {k: rows[:, i] for i, k in enumerate(("step", "atoms", "fed", "removed", "below"))}
+    out = {k: np.rint(x).astype(int) for k, x in gc.dem.read_print(paths, COUNTS).items()}
     # the strays each segment deleted at its start (template/dem/in.liggghts) are removed too:
     # segment k's counts carry those of segments 1..k
-    stray = np.zeros(len(rows), dtype=int)
+    stray = np.zeros(len(out["step"]), dtype=int)
     for k, s0 in enumerate(segment_starts(case, n_segments), 1):
         stray[out["step"] > s0] += strays(case, k)
     out["stray"] = stray
@@ -272,12 +286,8 @@ def strays(case, k):
 
 def segment_starts(case, n_segments):
     """The first step of each segment: the step of its restart (the previous one's last count)."""
-    starts = [0]
-    for k in range(1, n_segments):
-        with open(os.path.join(case, "post", f"counts_{k}.txt")) as fh:
-            last = [ln for ln in fh if ln.strip() and not ln.startswith("#")][-1]
-        starts.append(int(round(float(last.split()[0]))))
-    return starts
+    return [0] + [int(gc.dem.read_print([os.path.join(case, "post", f"counts_{k}.txt")], COUNTS)["step"][-1])
+                  for k in range(1, n_segments)]
 
 
 def flow(a, variant, R_d, case):
@@ -315,7 +325,7 @@ def flow(a, variant, R_d, case):
     n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
     w = steady * P.MASS
     k_fit = (2 * v["R"] - (w / (P.BEVERLOO_C * rho_b * math.sqrt(P.G) * length)) ** (1 / n_exp)) / P.D
-    cpu, wall, nseg = gc.runner.chain_cost(case)
+    cpu, wall, nseg = gc.chunks.cost(case, "segment")
     last = {k: int(x[-1]) for k, x in c.items()}
     in_silo = last["atoms"] - last["below"]
     keys = [("run", name), ("R_over_d", R_d), ("outlet_width_m", 2 * v["R"]), ("dt_s", v["DT"]), ("t_d_s", P.T_D),
@@ -392,34 +402,25 @@ def main():
     ap.add_argument("--size", choices=list(P.SIZES), default="study")
     ap.add_argument("--variant", nargs="+", choices=VARIANTS, default=list(VARIANTS))
     ap.add_argument("--R", type=float, nargs="+", default=None, help="outlet radii [d] (default: the size's)")
-    ap.add_argument("--jobs", type=int, default=2, help="LIGGGHTS jobs at a time (default 2)")
     ap.add_argument("--stage", choices=("all", "dem", "post"), default="all",
                     help="dem: fills and runs only; post: only the study's tables and plots from finished runs")
     ap.add_argument("--keep-dumps", action="store_true", help="keep the CG dumps after the fields are made")
     ap.add_argument("--seed", type=int, default=1)
-    a = gc.cli.parse(ap, lambda o: ap.error(f"--size {o.size} needs --out") if o.size in ("test", "full")
-                     else os.path.join(HERE, "results" if o.size == "study" else "run"))
-    if a.np != 1:
-        ap.error("--np: the runs are serial LIGGGHTS jobs (use --jobs)")
-    t_start = time.time()
+    gc.study.options(ap, post_only=False)
+    a = gc.study.parse(ap, lambda o: ap.error(f"--size {o.size} needs --out") if o.size in ("test", "full")
+                       else os.path.join(HERE, "results" if o.size == "study" else "run"))
+    t_start, a.post_only = time.time(), a.stage == "post"
     wanted = {var: [r for r in P.SIZES[a.size][var]["R"] if a.R is None or r in a.R] for var in a.variant}
     for var, rs in wanted.items():
         if a.R is not None and not rs:
             ap.error(f"--R {a.R}: none of the {var} outlets {P.SIZES[a.size][var]['R']} of size {a.size}")
     print(f"orifice-arch: size {a.size}, {', '.join(f'{k} R = {v}' for k, v in wanted.items())} d; out {a.out}",
           flush=True)
-    if a.stage != "post":
-        fills = gc.runner.pool([(f"{var} fill", fill, (a, var)) for var in wanted], a.jobs, "orifice-arch")
-        if a.setup_only:
-            for var, rs in wanted.items():
-                for R_d in rs:
-                    discharge(a, var, R_d)
-            return print(f"orifice-arch: fill and run folders written to {os.path.join(a.out, 'runs')}")
-        for name, f in fills.items():
-            if not f.get("skipped"):
-                print(f"orifice-arch: {name} done", flush=True)
-        runs = gc.runner.pool([(run_name(var, R_d), discharge, (a, var, R_d)) for var, rs in wanted.items()
-                               for R_d in rs], a.jobs, "orifice-arch")
+    fills = [(f"{var} fill", partial(fill_folder, a, var, True), partial(fill, a, var)) for var in wanted]
+    runs = [(run_name(var, R_d), partial(run_folder, a, var, R_d), partial(discharge, a, var, R_d))
+            for var, rs in wanted.items() for R_d in rs]
+    if gc.study.drive(a, "orifice-arch", fills, runs) is None:
+        return
     if a.stage == "dem":
         return print(f"orifice-arch: DEM stage done ({time.time() - t_start:.0f} s)")
     return post(a, wanted)

@@ -98,14 +98,6 @@ def accounting(v, run, fill):
 
 
 # --- flow rate -------------------------------------------------------------------
-def window_rates(t, m, t0, t_end):
-    """Mass flow [kg/s] in each whole 200 ms window from t0."""
-    return gc.outlet.window_rates(t, m, t0, t_end, P.WINDOW)
-
-
-mean_sd = gc.outlet.mean_sd
-
-
 def flow(v, L, run, t_end):
     """Mass flow through the outlet plane: 200 ms windows from the steady start
     (mean, SD over windows), per opening (the crossings left and right of the
@@ -113,10 +105,10 @@ def flow(v, L, run, t_end):
     _, t, d, x = events(run, "crossings", with_x=True)
     m = P.RHO_P * math.pi / 6 * d ** 3
     t0 = v["STEADY_FROM"]
-    rates = window_rates(t, m, t0, t_end)
-    mean, sd = mean_sd(rates)
+    rates = gc.outlet.window_rates(t, m, t0, t_end, P.WINDOW)       # mass flow [kg/s] in each whole window from t0
+    mean, sd = gc.outlet.mean_sd(rates)
     sides = [np.ones_like(x, bool)] if L == P.SINGLE else [x < 0, x >= 0]
-    per = [mean_sd(window_rates(t[s], m[s], t0, t_end)) for s in sides]
+    per = [gc.outlet.mean_sd(gc.outlet.window_rates(t[s], m[s], t0, t_end, P.WINDOW)) for s in sides]
     edges = np.arange(0.0, t_end + 1e-9, 0.02)
     series = np.histogram(t, edges, weights=m)[0] / 0.02
     return dict(windows=rates.tolist(), window_start=t0, mean=mean, sd=sd, n_windows=int(rates.size),
@@ -130,7 +122,7 @@ def cg_run(v, run, stem, lo, hi, log, last_only=False):
     lo..hi (XZ, Gaussian w = d), the four walls as planes; last_only: the last snapshot.
     Returns (CPU seconds, the snapshots' steps)."""
     dumps = os.path.join(run, "post", "cg")
-    steps = sorted(int(re.search(r"_(\d+)\.dump$", p).group(1)) for p in glob.glob(os.path.join(dumps, "particles_*.dump")))
+    steps = [s for s, _ in gc.dem.numbered(os.path.join(dumps, "particles_*.dump"))]
     if not steps:
         raise gc.CaseError(f"{dumps}: no CG snapshots (particles_*.dump)")
     opts = [("particles", "post/cg/particles_*.dump"), ("pairs", "post/cg/pairs_*.dump"),
@@ -193,8 +185,8 @@ def run(v, L, run_dir, fill, out):
     name = silo.geometry_name(L)
     os.makedirs(out, exist_ok=True)
     js = os.path.join(out, f"{name}.json")
-    cost = silo.read_cost(run_dir)
-    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(silo.done_file(run_dir)):
+    cost = silo.cost(run_dir)
+    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(silo.record_file(run_dir)):
         with open(js) as fh:
             return json.load(fh)
     acc = accounting(v, run_dir, fill)
@@ -203,7 +195,7 @@ def run(v, L, run_dir, fill, out):
     r = dict(friction=v["FRICTION"], geometry=name, L_mm=None if L == P.SINGLE else L, size=v["SIZE"],
              openings_m=P.openings(L), accounting=acc, flow=q,
              cost=dict(cost, total_cpu_s=round(sum(c["cpu_s"] for c in cost.values()), 1)),
-             fill_cost=silo.read_cost(fill).get("fill"), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
+             fill_cost=silo.fill_cost(fill), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
     if v["CG"]:
         cg, cols = cg_fields(v, L, run_dir)
         gc.series.write_csv(os.path.join(out, f"{name}_cg.csv"), cols, fmt="{:.6g}")
@@ -235,12 +227,6 @@ def load(out, f, L):
         return json.load(fh)
 
 
-def fit_phi_I(pts):
-    """phi = a1 / (1 + a2 I) over [(I, phi)] (gc.fits.phi_of_I)."""
-    i, phi = np.asarray(pts).reshape(-1, 2).T
-    return gc.fits.phi_of_I(i, phi)
-
-
 def study(a, runs, geoms, c):
     """Tables, figures, level.json and checks over every finished run."""
     res, rho_b = {}, {}
@@ -252,7 +238,7 @@ def study(a, runs, geoms, c):
         for L in geoms:
             run_dir = os.path.join(runs, f, silo.geometry_name(L))
             if not os.path.exists(os.path.join(a.out, f, f"{silo.geometry_name(L)}.json")) and \
-                    os.path.exists(silo.done_file(run_dir)) and "chunk_%d" % silo.chunks(v)[-1][0] in silo.read_cost(run_dir):
+                    os.path.exists(silo.record_file(run_dir)) and silo.finished(v, run_dir):
                 try:
                     run(v, L, run_dir, fill, os.path.join(a.out, f))
                 except gc.CaseError as e:
@@ -411,7 +397,7 @@ def plot_phi_I(a, res):
             continue
         i, phi = np.asarray(pts).T
         ax.plot(i, phi, ".", ms=2, color=COLOURS[f], alpha=0.3)
-        a1, a2 = fit_phi_I(pts)
+        a1, a2 = gc.fits.phi_of_I(i, phi)
         ii = np.linspace(P.I_FIT_MIN, max(i), 50)
         ax.plot(ii, a1 / (1 + a2 * ii), color=COLOURS[f], label=f"{f}: a1 = {a1:.3f}, a2 = {a2:.3f} ({len(pts)} points)")
         lines.append((f, a1, a2, len(pts)))

@@ -5,22 +5,12 @@ import json
 import math
 import os
 import random
-import time
 
 import granair_cases as gc
 import parameters as P
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-
-
-def prime_at_least(n):
-    """The smallest prime >= n (LIGGGHTS' random seeds must be primes > 10000)."""
-    def prime(m):
-        return m > 1 and all(m % p for p in range(2, int(m ** 0.5) + 1))
-    while not prime(n):
-        n += 1
-    return n
 
 
 def geometry_name(L):
@@ -58,7 +48,7 @@ def numbers(size, friction):
         DEM_DT=dt, CONTACT_TIME=t_c, G=P.G, RHO_P=P.RHO_P, SKIN=0.5 * P.D_MEAN,
         R1=P.D_SIZES[0] / 2, R2=P.D_SIZES[1] / 2, R3=P.D_SIZES[2] / 2, F1=1 / 3, F2=1 / 3, F3=1 / 3,
         SETTLE_TIME=s["settle"], N_SETTLE=round(s["settle"] / dt), THERMO_EVERY=round(0.05 / dt),
-        SEED=prime_at_least(12345701 if friction == "low" else 22345701), FEED_PHI=P.FEED_PHI, FEED_EVERY=P.FEED_EVERY,
+        SEED=gc.dem.next_prime(12345701 if friction == "low" else 22345701), FEED_PHI=P.FEED_PHI, FEED_EVERY=P.FEED_EVERY,
         FEED_STEPS=round(P.FEED_EVERY / dt), SERIES_STEPS=round(P.SERIES_EVERY / dt), SNAP_STEPS=snap_steps,
         GRANAIR_ROOT=ROOT, T_DISCHARGE=s["t_discharge"], CHUNK_T=s["chunk"], STEADY_FROM=s["steady_from"],
         CG=int(s["cg"]), T_CG=(P.CG_SNAPSHOTS - 1) * P.CG_SPACING_T)
@@ -129,68 +119,74 @@ def setup_run(v, L, run, fill):
         restart_in = os.path.relpath(os.path.join(fill, "dem", "fill.restart"), run) if k == 0 else f"dem/chunk_{k - 1}.restart"
         cv = dict(v, CHUNK=k, N_STEPS=steps, T_CHUNK=steps * v["DEM_DT"], RESTART_IN=restart_in,
                   RESTART_OUT=f"dem/chunk_{k}.restart", CG_EVERY=v["SNAP_STEPS"] if cg else 0,
-                  FEED_SEED=prime_at_least(v["SEED"] + 1000 * (k + 1)))
+                  FEED_SEED=gc.dem.next_prime(v["SEED"] + 1000 * (k + 1)))
         gc.template.write(os.path.join(dem, f"in.chunk_{k}"), gc.template.fill(text, cv, f"template/dem/in.chunk ({k})"))
     with open(os.path.join(run, "numbers.json"), "w") as fh:
         json.dump(dict(v, L=L, OPENINGS=P.openings(L), CHUNKS=chunks(v)), fh, indent=1)
 
 
-def liggghts(case, script, log):
-    """One stand-alone LIGGGHTS stage (one rank); CPU seconds."""
-    return gc.runner.run(["liggghts", "-in", script, "-log", f"log/{log}.liggghts", "-screen", f"log/{log}.screen"],
-                         case, log, np=1, parallel=False)
+def fill_stage(v, fill):
+    """(setup, simulate) of a friction set's fill (gc.study.drive): the folder; the fill
+    with its folder, run once (gc.study.once: cost.json and its restart)."""
+    def setup():
+        setup_fill(v, gc.runner.clean(fill))
+
+    def run():
+        setup()
+        return {"cpu_s": round(gc.runner.liggghts(fill, "dem/in.fill", "fill"), 1)}
+    return setup, lambda: gc.study.once(os.path.join(fill, "cost.json"), run, [os.path.join(fill, "dem", "fill.restart")])[0]
 
 
-def done_file(case):
-    return os.path.join(case, "cost.json")
+def fill_cost(fill):
+    """The fill's {cpu_s, wall_s} (cost.json; {"fill": ...} in one of an older study.py), or None."""
+    path = os.path.join(fill, "cost.json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as fh:
+        rec = json.load(fh)
+    return rec.get("fill", rec)
 
 
-def read_cost(case):
-    p = done_file(case)
-    if not os.path.exists(p):
-        return {}
-    with open(p) as fh:
-        return json.load(fh)
+def record_file(run):
+    """What marks a run's progress: log/discharge.json (gc.chunks), cost.json in a run of an older study.py."""
+    new, old = os.path.join(run, "log", "discharge.json"), os.path.join(run, "cost.json")
+    return old if os.path.exists(old) and not os.path.exists(new) else new
 
 
-def write_cost(case, cost):
-    with open(done_file(case), "w") as fh:
-        json.dump(cost, fh, indent=1)
+def cost(run):
+    """{chunk_<k>: {cpu_s, wall_s, steps, cg}} of a run's finished chunks."""
+    if record_file(run).endswith("cost.json"):
+        with open(record_file(run)) as fh:
+            return json.load(fh)
+    return {f"chunk_{c['k']}": dict(cpu_s=c["cpu_s"], wall_s=round(c["wall_s"], 1), steps=c["steps"], cg=c["cg"])
+            for c in gc.chunks.record(run, "discharge")["chunks"]}
 
 
-def run_fill(v, fill):
-    """The fill stage unless its restart exists (resumable)."""
-    cost = read_cost(fill)
-    if "fill" in cost and os.path.exists(os.path.join(fill, "dem", "fill.restart")):
-        return cost
-    setup_fill(v, fill)
-    t0 = time.time()
-    cpu = liggghts(fill, "dem/in.fill", "fill")
-    cost = {"fill": {"cpu_s": round(cpu, 1), "wall_s": round(time.time() - t0, 1)}}
-    write_cost(fill, cost)
-    return cost
+def finished(v, run):
+    return f"chunk_{chunks(v)[-1][0]}" in cost(run)
 
 
-def run_discharge(v, L, run, fill, progress=print):
-    """The chunks of one geometry in turn, each skipped if its restart and cost
-    exist (a stopped study resumes at the chunk it was in)."""
-    cost = read_cost(run)
-    if not cost:
-        setup_run(v, L, run, fill)
-    for k, steps, cg in chunks(v):
-        key = f"chunk_{k}"
-        # done: its cost is written and its restart is there, or a later chunk
-        # ran from it (the restart two chunks back is removed below)
-        if key in cost and (os.path.exists(os.path.join(run, "dem", f"chunk_{k}.restart"))
-                            or f"chunk_{k + 1}" in cost):
-            continue
-        t0 = time.time()
-        cpu = liggghts(run, f"dem/in.chunk_{k}", key)
-        cost[key] = {"cpu_s": round(cpu, 1), "wall_s": round(time.time() - t0, 1), "steps": steps, "cg": cg}
-        write_cost(run, cost)
-        if k > 0:                   # the previous restart is no longer needed
-            prev = os.path.join(run, "dem", f"chunk_{k - 2}.restart")
-            if os.path.exists(prev):
-                os.remove(prev)
+def run_stage(v, L, run, fill, progress=print):
+    """(setup, simulate) of one geometry's discharge (gc.study.drive): the folder; the
+    chunks in turn (gc.chunks.loop: a stopped study resumes at the chunk it was in; the
+    folder kept once one has run), returning the cost()."""
+    def setup():
+        setup_run(v, L, gc.runner.clean(run), fill)
+
+    def step(rec):
+        if len(rec["chunks"]) == len(chunks(v)):
+            return f"{len(rec['chunks'])} chunks"
+        k, steps, cg = chunks(v)[len(rec["chunks"])]
+        cpu = gc.runner.liggghts(run, f"dem/in.chunk_{k}", f"chunk_{k}")
+        if os.path.exists(os.path.join(run, "dem", f"chunk_{k - 2}.restart")):
+            os.remove(os.path.join(run, "dem", f"chunk_{k - 2}.restart"))      # no longer needed
         progress(f"{os.path.basename(run)}: chunk {k} done, {cpu:.0f} s CPU")
-    return cost
+        return dict(k=k, cpu_s=round(cpu, 1), steps=steps, cg=cg)
+
+    def simulate():
+        if not os.path.exists(record_file(run)):
+            setup()
+        if not finished(v, run):        # (the record untouched: post.run keeps a newer post-processing)
+            gc.chunks.loop(run, step, "discharge")
+        return cost(run)
+    return setup, simulate

@@ -18,7 +18,7 @@ OUT/<set>/<geom>.json (flow rate, accounting, CG averages, cost),
 phi_I.png, maps_<set>.png, summary.txt, level.json per run (compare).
 """
 import os
-import sys
+from functools import partial
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -49,50 +49,34 @@ def main():
                     help="friction sets (default: the size's; demo low, study both)")
     ap.add_argument("--L", nargs="+", default=None,
                     help="separations [mm] and/or 'single' (default: the size's; study all eight)")
-    ap.add_argument("--jobs", type=int, default=2, help="LIGGGHTS runs at a time (default 2)")
-    ap.add_argument("--post-only", action="store_true", help="post-process the finished runs, run nothing")
-    a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "reference-study" if a.size == "study" else os.path.join("run", a.size)))
-    if a.np != 1:
-        ap.error("--np: the runs are one rank each (use --jobs for two at a time)")
+    gc.study.options(ap)
+    a = gc.study.parse(ap, lambda a: os.path.join(HERE, "reference-study" if a.size == "study" else os.path.join("run", a.size)))
     a.friction = a.friction or P.SIZES[a.size]["friction"]
     geoms = geometries(a.L) if a.L else P.SIZES[a.size]["geometries"]
     runs = os.path.join(a.out, "runs")
     print(f"two-slot-silo: size {a.size}, friction {' '.join(a.friction)}, "
           f"geometries {' '.join(silo.geometry_name(L) for L in geoms)}, {a.jobs} job(s)", flush=True)
-    if a.setup_only:
-        for f in a.friction:
-            v = silo.numbers(a.size, f)
-            silo.setup_fill(v, gc.runner.clean(os.path.join(runs, f, "fill")))
-            for L in geoms:
-                silo.setup_run(v, L, gc.runner.clean(os.path.join(runs, f, silo.geometry_name(L))),
-                               os.path.join(runs, f, "fill"))
-        return print(f"two-slot-silo: run folders written to {runs}")
 
-    def one(f, L):
-        v = silo.numbers(a.size, f)
-        fill = os.path.join(runs, f, "fill")
-        run = os.path.join(runs, f, silo.geometry_name(L))
-        os.makedirs(run, exist_ok=True)
-        cost = silo.run_discharge(v, L, run, fill, progress=lambda m: print(f"two-slot-silo {f} {m}", flush=True))
-        cpu = sum(c["cpu_s"] for c in cost.values())
+    def one(f, L, simulate):
+        cost = simulate()
         try:
-            post.run(v, L, run, fill, os.path.join(a.out, f))
+            post.run(silo.numbers(a.size, f), L, os.path.join(runs, f, silo.geometry_name(L)),
+                     os.path.join(runs, f, "fill"), os.path.join(a.out, f))
         except gc.CaseError as e:      # the run is kept: --post-only redoes this
             print(f"two-slot-silo {f} {silo.geometry_name(L)}: post-processing failed ({e}); the run is "
                   f"finished, rerun the study with --post-only", flush=True)
-        return {"cpu_s": cpu}
+        return {"cpu_s": sum(c["cpu_s"] for c in cost.values())}
 
-    if not a.post_only:
-        fills = [(f"{f} fill", silo.run_fill, (silo.numbers(a.size, f), os.path.join(runs, f, "fill")))
-                 for f in a.friction]
-        for f in a.friction:
-            os.makedirs(os.path.join(runs, f), exist_ok=True)
-        gc.runner.pool(fills, a.jobs, "two-slot-silo")
-        # the normalisers first (single, L = 0), the sets interleaved, so a
-        # stopped study has the most useful runs
-        order = sorted(((f, L) for f in a.friction for L in geoms),
-                       key=lambda t: (post.priority(t[1]), a.friction.index(t[0])))
-        gc.runner.pool([(f"{f} {silo.geometry_name(L)}", one, (f, L)) for f, L in order], a.jobs, "two-slot-silo")
+    fills = [(f"{f} fill", *silo.fill_stage(silo.numbers(a.size, f), os.path.join(runs, f, "fill"))) for f in a.friction]
+    # the normalisers first (single, L = 0), the sets interleaved, so a stopped study has the most useful runs
+    order = sorted(((f, L) for f in a.friction for L in geoms), key=lambda t: (post.priority(t[1]), a.friction.index(t[0])))
+    discharges = []
+    for f, L in order:
+        setup, simulate = silo.run_stage(silo.numbers(a.size, f), L, os.path.join(runs, f, silo.geometry_name(L)),
+                                         os.path.join(runs, f, "fill"), lambda m, f=f: print(f"two-slot-silo {f} {m}", flush=True))
+        discharges.append((f"{f} {silo.geometry_name(L)}", setup, partial(one, f, L, simulate)))
+    if gc.study.drive(a, "two-slot-silo", fills, discharges) is None:
+        return
     c = gc.checks.Checks(f"two-slot-silo {a.size}")
     post.study(a, runs, geoms, c)
     c.report(enforce=a.check)

@@ -6,7 +6,6 @@
     pool([(name, fn, args), ...], jobs)              independent jobs, a line per finished one
     liggghts(case, "dem/in.fill", "fill")            a stand-alone LIGGGHTS stage (its log and screen in log/)
     run(cmd, case, stop_when=done)                   stop an OpenFOAM run (stopAt writeNow) once done()
-    chain, chain_cost                                the old names of chunks.liggghts and chunks.cost
 
 Every step writes case/log/<name>.log; a failure raises CaseError with the
 command, the folder and the last lines of its log. CPU time is user + system
@@ -93,19 +92,6 @@ def liggghts(case, script, step, log=None, screen=None, np=1, var=()):
     for key, value in (var.items() if isinstance(var, dict) else var):
         cmd += ["-var", str(key), str(value)]
     return run(cmd, case, step, np=np, parallel=False)
-
-
-def chain(case, script, segments, first, name="segment", label="granair"):
-    """chunks.liggghts under its old name: (CPU s of the segments run now, segments skipped)."""
-    from . import chunks
-    rec = chunks.liggghts(case, script, segments, first, name, label)
-    return sum(c["cpu_s"] for c in rec["chunks"][len(rec["chunks"]) - rec["ran"]:]), len(rec["chunks"]) - rec["ran"]
-
-
-def chain_cost(case, name="segment"):
-    """chunks.cost under its old name."""
-    from . import chunks
-    return chunks.cost(case, name)
 
 
 def clean(path):

@@ -370,10 +370,11 @@ class Chunks(unittest.TestCase):
             self.assertTrue(os.path.exists(os.path.join(case, "restart", "segment_2.restart")))
             self.assertFalse(os.path.exists(os.path.join(case, "restart", "segment_1.restart")))
             self.assertEqual(gc.chunks.cost(case, "segment")[2], 2)
-            # the old names
-            cpu, skipped = gc.runner.chain(case, "in.seg", segs + [dict(n=30)], "fill.restart", label="test")
-            self.assertEqual(skipped, 2)
-            self.assertEqual(gc.runner.chain_cost(case)[2], 3)
+            # a longer list goes on after the finished segments
+            rec = gc.chunks.liggghts(case, "in.seg", segs + [dict(n=30)], "fill.restart", label="test",
+                                     progress=lambda s: None)
+            self.assertEqual((rec["ran"], len(rec["chunks"])), (1, 3))
+            self.assertEqual(gc.chunks.cost(case, "segment")[2], 3)
             os.remove(os.path.join(case, "restart", "segment_3.restart"))
             with self.assertRaisesRegex(CaseError, "needs the restart"):
                 gc.chunks.liggghts(case, "in.seg", segs + [dict(n=30)] * 2, "fill.restart", progress=lambda s: None)
