@@ -32,7 +32,6 @@ import glob
 import json
 import math
 import os
-import re
 
 import numpy as np
 

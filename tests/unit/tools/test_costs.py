@@ -15,7 +15,6 @@ couple = 100 ns, fixed = 0.5 ms, eff2 = 0.8, memory 100 MiB + 1000 B/particle
 import io
 import json
 import os
-import sys
 import tempfile
 import unittest
 from contextlib import redirect_stdout

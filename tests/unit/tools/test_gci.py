@@ -4,7 +4,6 @@ answer is known: a manufactured f = f0 + c h^p recovers p, the extrapolated
 value f0 and GCI = 1.25 |e21/f1|/(r^p - 1); Celik et al.'s (2008) worked
 example; and oscillatory / diverging sequences get no GCI."""
 import math
-import os
 import sys
 
 from granair_cases import gci
