@@ -31,7 +31,8 @@ COUETTE_RUNS = [("couette-stick", 0.50), ("couette-slide", 0.40), ("couette-rigi
 # solver's mass/volume coupling, not a claim about glass beads' phi(I).
 DILATANT = dict(phiMax=PHI, phiMin=0.4)
 PLANE_DILATANCY_END = 16.0  # [s]: the layer's top creeps to its steady dilation more slowly (measured: the
-                            # last two writes of the lower 90 % change by 2e-4 of u_s at 8 s, 2e-5 at 16 s)
+                            # last two writes of the lower 90 % change by 2e-4 of u_s at 8 s, 2e-5 at 16 s;
+                            # with dilatancyRelaxation 0.2 4.4e-4 at 24 s: Dilatancy.H)
 
 RUNS = {"inclined-plane": [("plane-jop", "none"), ("plane-barkerGray", "barkerGray2017")],
         "couette-coulomb": COUETTE_RUNS,

@@ -29,11 +29,12 @@ std::unique_ptr<volScalarField> cellField(const fvMesh& mesh, const word& name, 
 
 } // namespace
 
-Dilatancy::Dilatancy(const fvMesh& mesh, const ::granair::Dictionary& properties, const GranularMixture& mixture)
+Dilatancy::Dilatancy(const fvMesh& mesh, const ::granair::Dictionary& properties, GranularMixture& mixture)
 :
     mesh_(mesh),
     enabled_(properties.getBool("dilatancy", false)),
     rate_(4.09),
+    relax_(1),
     rhoP_(0),
     phi0_(1)
 {
@@ -51,6 +52,11 @@ Dilatancy::Dilatancy(const fvMesh& mesh, const ::granair::Dictionary& properties
     {
         ::granair::fail<::granair::InputError>(properties.where("dilatancyRate"), ": value ", rate_, " outside (0, 1e6)");
     }
+    relax_ = properties.getDouble("dilatancyRelaxation", relax_);
+    if (!(relax_ > 0 && relax_ <= 1))
+    {
+        ::granair::fail<::granair::InputError>(properties.where("dilatancyRelaxation"), ": value ", relax_, " outside (0, 1]");
+    }
     const auto& rheology = properties.subDict("rheology");
     rhoP_ = rheology.getDouble("rhoP", 1e-3, 1e5);
     phi0_ = mixture.rhoPowder()/rhoP_;
@@ -64,6 +70,7 @@ Dilatancy::Dilatancy(const fvMesh& mesh, const ::granair::Dictionary& properties
         );
     }
 
+    mixture.useDeviatoricShearRate();
     const volScalarField& alpha = mixture.alpha();
     IOobject io("alpha.grains", mesh.time().timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE);
     if (io.typeHeaderOk<volScalarField>(true))
@@ -86,7 +93,8 @@ Dilatancy::Dilatancy(const fvMesh& mesh, const ::granair::Dictionary& properties
     );
     correctPhi(alpha);
     Info<< "Dilatancy: on, the powder's solid fraction relaxes to phi(I) at rate k = " << rate_
-        << " (div U = -(alpha/phi) Dphi/Dt), initial packing rho_b/rho_p = " << phi0_ << nl << endl;
+        << " (div U = -(alpha/phi) Dphi/Dt, relaxed by " << relax_ << " per corrector), initial packing rho_b/rho_p = "
+        << phi0_ << nl << endl;
 }
 
 void Dilatancy::correctPhi(const volScalarField& alpha)
@@ -132,13 +140,17 @@ void Dilatancy::correctSource(const GranularMixture& mixture, scalar deltaT)
 {
     const scalarField& a = mixture.alpha().primitiveField();
     const scalarField& gammaDot = mixture.shearRate().primitiveField();
-    const scalarField& target = mixture.solidFraction().primitiveField();
+    const scalarField& targetPhi = mixture.solidFraction().primitiveField();
+    const scalarField& I = mixture.inertialNumber().primitiveField();
     const scalarField& phi = phi_->primitiveField();
     scalarField& S = source_->primitiveFieldRef();
     forAll(S, celli)
     {
-        const scalar r = rate_*gammaDot[celli];
-        S[celli] = min(max(a[celli], scalar(0)), scalar(1))*r*(phi[celli] - target[celli])/(1 + deltaT*r*phi[celli]);
+        // Stress-free cells (p <= 0, I written as -1) keep their packing:
+        // phi(I) has no meaning there (Dilatancy.H).
+        const scalar r = I[celli] < 0 ? 0 : rate_*gammaDot[celli];
+        const scalar target = min(max(a[celli], scalar(0)), scalar(1))*r*(phi[celli] - targetPhi[celli])/(1 + deltaT*r*phi[celli]);
+        S[celli] += relax_*(target - S[celli]);
     }
     source_->correctBoundaryConditions();
 }
