@@ -83,6 +83,19 @@ def bagnold_flux(h, theta_deg, phi, q):
     return 0.6 * h * us
 
 
+def dilatant_layer(h0, phi0, theta_deg, q, phi_max, phi_min):
+    """The steady layer with the solid fraction fed back into the volume: a layer
+    laid down h0 deep at the packing phi0 dilates until phi = phi(I) of the Bagnold
+    I (uniform with depth, so the steady div U = 0 needs phi uniform too), with
+    phi(I) = phi_max - (phi_max - phi_min) I clamped to [phi_min, phi_max]
+    (coupling/rheology/MuI.hpp). The grains' volume per area h0 phi0 is kept, so
+    the depth is h = h0 phi0 / phi(I); the velocity is bagnold(y, h, theta, phi).
+    Returns (phi, h, I)."""
+    I = inertial_number_at(math.tan(math.radians(theta_deg)), q)
+    phi = min(max(phi_max - (phi_max - phi_min) * I, phi_min), phi_max)
+    return phi, h0 * phi0 / phi, I
+
+
 # ------------------------------------------------- plane shear, Coulomb wall
 def couette_coulomb(y, H, V, P, mu_w, q):
     """Plane shear of a layer of height H under the pressure P (no gravity):

@@ -78,3 +78,8 @@ def fill_height(mass, rho_b=RHO_BULK):
         r = R_OUT + h * TAN_CONE
         lo, hi = (h, hi) if math.pi * h / 3 * (R_OUT ** 2 + R_OUT * r + r ** 2) < v else (lo, h)
     return 0.5 * (lo + hi)
+
+# --dilatancy (cfd-side/continuum/Dilatancy.H): the rate of d(phi)/dt = -k phi gammaDot (phi - phi(I)),
+# Pailha & Pouliquen's (2009) k, the Darcy-Ergun air model's default too
+DILATANCY_RATE = 4.09
+DILATANCY_RELAXATION = 0.2    # the under-relaxation of the volume source (the solver's default; Dilatancy.H: why)

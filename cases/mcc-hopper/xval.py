@@ -15,7 +15,7 @@ calibrated run written with --ascii; and --run2, e.g. the size-corrected
 orifice), along the axis (the CG ring nearest 1 mm, by z) and across the
 orifice plane z = 0 (by r): solid fraction (the continuum's alpha rho_b /
 rho_p, the mass it carries, and alpha phi(I), its calibrated dilatancy, not
-fed back), vertical velocity, pressure and the vertical mass flux with its
+fed back; with --dilatancy runs alpha.grains, fed back), vertical velocity, pressure and the vertical mass flux with its
 integral over the orifice. Writes results/calibrated/xval_fields.{png,json} and
 xval_fields_continuum.csv (the continuum's profiles: run1 = --run, run2 = --run2).
 
@@ -44,6 +44,10 @@ def continuum_fields(run, t0, t1, r_axis):
     rho_b, _ = study.material(argparse_namespace(settings))
     phi_b = rho_b / gc.calibration.fit(P.CALIBRATION)["rho_p"] if settings.get("rheology_from") == "calibration" \
         else rho_b / P.RHO_P
+    # with --dilatancy the continuum's grains are a field of their own (Dilatancy.H): the solid
+    # fraction alpha.grains, the mass flux rho_p alpha.grains v_z
+    dilatant_run = bool(settings.get("dilatancy"))
+    rho_p = gc.calibration.fit(P.CALIBRATION)["rho_p"] if settings.get("rheology_from") == "calibration" else P.RHO_P
     times = [t for t, _ in gc.foam.time_dirs(run) if t0 - 1e-9 <= t <= t1 + 1e-9]
     if not times:
         raise gc.CaseError(f"{run}: no written time in {t0:g}-{t1:g} s (run with --ascii; fields every 0.5 s)")
@@ -55,11 +59,13 @@ def continuum_fields(run, t0, t1, r_axis):
     for kind, (coord, pts) in lines.items():
         acc = []
         for t in times:
-            c = gc.foam.line_profile(run, t, ["alpha.powder", "phiSolid", "U", "p"], pts, patch="front")
+            names = ["alpha.powder", "phiSolid", "U", "p"] + (["alpha.grains"] if dilatant_run else [])
+            c = gc.foam.line_profile(run, t, names, pts, patch="front")
             al = c["alpha.powder"]
-            acc.append(dict(solid=al * phi_b, dilatant=al * c["phiSolid"],
+            solid = c["alpha.grains"] if dilatant_run else al * phi_b
+            acc.append(dict(solid=solid, dilatant=al * c["phiSolid"],
                             velocity_z=np.where(al >= 0.05, c["U_z"], np.nan), pressure=np.where(al >= 0.05, c["p"], np.nan),
-                            flux=-al * rho_b * c["U_z"]))
+                            flux=-(solid * rho_p if dilatant_run else al * rho_b) * c["U_z"]))
         vals = {k: np.nanmean([x[k] for x in acc], axis=0) for k in acc[0]}
         if kind == "orifice":      # beyond the orifice edge z = 0 is inside the cone wall: the interpolation
             vals = {k: np.where(coord <= P.R_OUT + 1e-9, y, np.nan) for k, y in vals.items()}   # would cross it

@@ -26,9 +26,9 @@ tmp<surfaceScalarField> interfaceNormalFlux(const volScalarField& alpha)
     return (gradAlphaf/(mag(gradAlphaf) + deltaN)) & mesh.Sf();
 }
 
-} // namespace
-
-void advectAlpha(volScalarField& alpha, const surfaceScalarField& phi, surfaceScalarField& alphaPhi)
+// One to nAlphaCorr MULES passes with the source Su (zeroField: none).
+template<class SuType>
+void advect(volScalarField& alpha, const surfaceScalarField& phi, surfaceScalarField& alphaPhi, const SuType& Su)
 {
     const fvMesh& mesh = alpha.mesh();
     const dictionary& controls = mesh.solverDict(alpha.name());
@@ -54,8 +54,26 @@ void advectAlpha(volScalarField& alpha, const surfaceScalarField& phi, surfaceSc
             fvc::flux(phi, alpha, "div(phi,alpha)")
           + fvc::flux(-fvc::flux(-phir, scalar(1) - alpha, "div(phirb,alpha)"), alpha, "div(phirb,alpha)");
 
-        MULES::explicitSolve(geometricOneField(), alpha, phi, alphaPhi, zeroField(), zeroField(), oneField(), zeroField());
+        MULES::explicitSolve(geometricOneField(), alpha, phi, alphaPhi, zeroField(), Su, oneField(), zeroField());
     }
+}
+
+} // namespace
+
+void advectAlpha(volScalarField& alpha, const surfaceScalarField& phi, surfaceScalarField& alphaPhi)
+{
+    advect(alpha, phi, alphaPhi, zeroField());
+}
+
+void advectAlphaDilatant(volScalarField& alpha, const surfaceScalarField& phi, surfaceScalarField& alphaPhi)
+{
+    // Only where there is powder: in the air div(phi) is the pressure solver's
+    // residual, which as a source would make (and then move out) spurious powder.
+    const volScalarField::Internal divU
+    (
+        "divU", fvc::div(phi)().internalField()*pos(alpha.internalField() - 1e-6)
+    );
+    advect(alpha, phi, alphaPhi, divU);
 }
 
 } // namespace granair

@@ -74,6 +74,7 @@ GranularMixture::GranularMixture(const fvMesh& mesh, const ::granair::Dictionary
     muAir_(properties.subDict("air").getDouble("mu", 1e-9, 1e3)),
     relax_(properties.getDouble("viscosityRelaxation", 0.5)),
     aitken_(properties.getBool("viscosityAitken", true)),
+    deviatoric_(false),
     omega_(relax_),
     omegaMin_(0.05),
     omegaMax_(20),
@@ -175,7 +176,7 @@ void GranularMixture::correctViscosity
         const tensor& g = gradU[celli];
         Eigen::Matrix3d m;
         m << g.xx(), g.xy(), g.xz(), g.yx(), g.yy(), g.yz(), g.zx(), g.zy(), g.zz();
-        gd[celli] = ::granair::shearRate(m);
+        gd[celli] = deviatoric_ ? ::granair::deviatoricShearRate(m) : ::granair::shearRate(m);
     }
     if (temperature_)
     {

@@ -85,7 +85,7 @@ PowderBalance::PowderBalance
     const fvMesh& mesh,
     const std::string& outletPatch,
     scalar rhoPowder,
-    const volScalarField& alpha,
+    const volScalarField& content,
     bool withAir,
     const fileName& directory,
     scalar orificeHeight
@@ -117,7 +117,7 @@ PowderBalance::PowderBalance
     const uniformDimensionedVectorField& g = meshObjects::gravity::New(mesh.time());
     if (mag(g.value()) > SMALL) up_ = -g.value()/mag(g.value());
     nearOutlet_ = stressFreeByConstruction(mesh, outletPatch_, orificeHeight_, up_);
-    initialMass_ = powderMass(alpha);
+    initialMass_ = powderMass(content);
 
     std::vector<::granair::Column> columns{
         {"t", "s"}, {"mass_flow_kg_s", "kg/s"}, {"discharged_kg", "kg"}, {"powder_mass_kg", "kg"},
@@ -140,20 +140,21 @@ PowderBalance::PowderBalance
         << ", initial powder mass " << initialMass_ << " kg" << nl << endl;
 }
 
-scalar PowderBalance::powderMass(const volScalarField& alpha) const
+scalar PowderBalance::powderMass(const volScalarField& content) const
 {
-    return scale_*rhoPowder_*gSum(alpha.primitiveField()*mesh_.V().field());
+    return scale_*rhoPowder_*gSum(content.primitiveField()*mesh_.V().field());
 }
 
-scalar PowderBalance::relativeBalanceError(const volScalarField& alpha) const
+scalar PowderBalance::relativeBalanceError(const volScalarField& content) const
 {
-    return (powderMass(alpha) + discharged_ - initialMass_)/initialMass_;
+    return (powderMass(content) + discharged_ - initialMass_)/initialMass_;
 }
 
 void PowderBalance::record
 (
+    const volScalarField& content,
+    const surfaceScalarField& contentFlux,
     const volScalarField& alpha,
-    const surfaceScalarField& alphaPhi,
     const AirPercolation& air,
     const volScalarField& p,
     const StepStatistics& step
@@ -162,10 +163,10 @@ void PowderBalance::record
     const scalar dt = mesh_.time().deltaTValue();
     scalar outletFlux = 0;
     scalar boundaryFlux = 0;
-    forAll(alphaPhi.boundaryField(), patchi)
+    forAll(contentFlux.boundaryField(), patchi)
     {
         if (mesh_.boundaryMesh()[patchi].coupled()) continue;
-        const scalar f = sum(alphaPhi.boundaryField()[patchi]);
+        const scalar f = sum(contentFlux.boundaryField()[patchi]);
         boundaryFlux += f;
         if (patchi == outletPatch_) outletFlux = f;
     }
@@ -174,7 +175,7 @@ void PowderBalance::record
     lastFlow_ = scale_*rhoPowder_*outletFlux;
     discharged_ += scale_*rhoPowder_*boundaryFlux*dt;
 
-    const scalar mass = powderMass(alpha);
+    const scalar mass = powderMass(content);
     std::vector<double> row{mesh_.time().value(), lastFlow_, discharged_, mass, (mass + discharged_ - initialMass_)/initialMass_};
     if (air_)
     {

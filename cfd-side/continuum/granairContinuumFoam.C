@@ -13,6 +13,9 @@ Description
 
         d(alpha)/dt + div(alpha U) = 0                           (MULES, AlphaAdvection.H)
         div(U) = 0
+        [dilatancy on (Dilatancy.H): d(alpha)/dt + div(alpha U) = div(U) = S,
+         S = -(alpha/phi) Dphi/Dt from phi relaxing to phi(I); the grains
+         alpha phi conserved; rho = rho_p alpha phi + rho_air (1 - alpha phi)]
         d(rho U)/dt + div(rho U U) = -grad(p_rgh) - (g.x) grad(rho)
                                      + div(mu (grad U + grad U^T)) - grad(p_a)
         p = p_rgh + rho (g.x - g.hRef)   the mixture pressure the rheology sees
@@ -25,7 +28,7 @@ Description
     harmonic face viscosity. Time step from maxCo and maxAlphaCo.
 
 Files
-    constant/granularProperties (GranularMixture.H, AirPercolation.H, and
+    constant/granularProperties (GranularMixture.H, AirPercolation.H, Dilatancy.H, and
         outletPatch <name>;  the patch the discharge goes through, default outlet;
         acceleration (ax ay az);  optional uniform acceleration besides g [m/s2];
         orificeHeight h;     optional: outlet dp/dz measured on the plane z = h, PowderBalance.H),
@@ -53,6 +56,7 @@ Reference
 
 #include "AirPercolation.H"
 #include "AlphaAdvection.H"
+#include "Dilatancy.H"
 #include "GranularMixture.H"
 #include "OuterCorrectors.H"
 #include "PowderBalance.H"
@@ -208,6 +212,19 @@ int main(int argc, char* argv[])
         mesh.setFluxRequired(p_rgh.name());
         mesh.setFluxRequired(alpha.name());
 
+        // The solid fraction fed back into the powder's volume (opt-in,
+        // `dilatancy on;`): Dilatancy.H.
+        Foam::granair::Dilatancy dilatancy(mesh, properties, mixture);
+        if (dilatancy.enabled())
+        {
+            dilatancy.correctDensity(rho, mixture.rhoAir());
+            rhoPhi = fvc::interpolate(rho)*phi;
+        }
+        // The volume fraction whose density the powder mass is counted with:
+        // alpha at rho_b, or the grains' at rho_p.
+        const volScalarField& content = dilatancy.enabled() ? dilatancy.grains() : alpha;
+        const surfaceScalarField& contentFlux = dilatancy.enabled() ? dilatancy.grainFlux() : alphaPhi;
+
         Foam::granair::AirPercolation air(mesh, properties, mixture);
         // An optional uniform acceleration [m/s2] besides g: the along-slope
         // part of gravity on a periodic inclined plane, which cannot enter
@@ -218,8 +235,8 @@ int main(int argc, char* argv[])
         (
             mesh,
             properties.getString("outletPatch", "outlet"),
-            mixture.rhoPowder(),
-            alpha,
+            dilatancy.enabled() ? dilatancy.rhoParticle() : mixture.rhoPowder(),
+            content,
             air.enabled(),
             runTime.globalPath()/"postProcessing",
             properties.getDouble("orificeHeight", VGREAT)
@@ -249,9 +266,19 @@ int main(int argc, char* argv[])
                 << "  Co = " << co << "  alphaCo = " << alphaCo << endl;
 
             // Explicit (MULES) powder transport with the fluxes of the last step.
-            Foam::granair::advectAlpha(alpha, phi, alphaPhi);
-            rhoPhi = alphaPhi*(rhoPowder - rhoAir) + phi*rhoAir;
-            mixture.correctDensity();
+            if (dilatancy.enabled())
+            {
+                Foam::granair::advectAlphaDilatant(alpha, phi, alphaPhi);
+                dilatancy.transport(alpha, alphaPhi);
+                rhoPhi = dilatancy.massFlux(phi, mixture.rhoAir());
+                dilatancy.correctDensity(rho, mixture.rhoAir());
+            }
+            else
+            {
+                Foam::granair::advectAlpha(alpha, phi, alphaPhi);
+                rhoPhi = alphaPhi*(rhoPowder - rhoAir) + phi*rhoAir;
+                mixture.correctDensity();
+            }
 
             // Outer correctors (OuterCorrectors.H): relaxed (relaxationFactors
             // U, p_rgh) until converged, then one final, unrelaxed corrector (UFinal,
@@ -272,6 +299,11 @@ int main(int argc, char* argv[])
 
                 // Viscosity at the latest U and p (a Picard iterate of the rheology).
                 mixture.correctViscosity(U, phi, p, corr == 1);
+                if (dilatancy.enabled())
+                {
+                    // div U of this corrector, from its gammaDot and phi(I).
+                    dilatancy.correctSource(mixture, runTime.deltaTValue());
+                }
                 if (corr == 1)
                 {
                     air.solve(mixture, alphaPhi, phi);
@@ -367,7 +399,13 @@ int main(int argc, char* argv[])
 
                     for (label nonOrth = 0; nonOrth <= outer.nNonOrth; ++nonOrth)
                     {
-                        fvScalarMatrix p_rghEqn(fvm::laplacian(rAtUf, p_rgh) == fvc::div(phiHbyA));
+                        // div(phi) = 0, or = S with dilatancy (Dilatancy.H).
+                        fvScalarMatrix p_rghEqn
+                        (
+                            dilatancy.enabled()
+                          ? fvm::laplacian(rAtUf, p_rgh) == fvc::div(phiHbyA) - dilatancy.source()
+                          : fvm::laplacian(rAtUf, p_rgh) == fvc::div(phiHbyA)
+                        );
                         p_rghEqn.setReference(pRefCell, getRefCellValue(p_rgh, pRefCell));
                         const bool final = piso == outer.nCorr - 1 && nonOrth == outer.nNonOrth;
                         p_rghEqn.solve(mesh.solver(p_rgh.select(final)));
@@ -383,7 +421,9 @@ int main(int argc, char* argv[])
                         }
                     }
 
-                    const scalar contErr = runTime.deltaTValue()*mag(fvc::div(phi))().weightedAverage(mesh.V()).value();
+                    const scalar contErr = dilatancy.enabled()
+                      ? runTime.deltaTValue()*mag(fvc::div(phi) - dilatancy.source())().weightedAverage(mesh.V()).value()
+                      : runTime.deltaTValue()*mag(fvc::div(phi))().weightedAverage(mesh.V()).value();
                     cumulativeContErr += contErr;
 
                     p == p_rgh + rho*gh;
@@ -409,13 +449,22 @@ int main(int argc, char* argv[])
                     << endl;
             }
 
-            balance.record(alpha, alphaPhi, air, p, step);
+            balance.record(content, contentFlux, alpha, air, p, step);
             Info<< "continuity error cumulative " << cumulativeContErr << nl
                 << "powder: mass flow " << balance.lastMassFlow() << " kg/s, discharged " << balance.discharged()
-                << " kg, in domain " << balance.powderMass(alpha) << " kg, balance error "
-                << balance.relativeBalanceError(alpha) << ", alpha in [" << gMin(alpha.primitiveField()) << ", "
+                << " kg, in domain " << balance.powderMass(content) << " kg, balance error "
+                << balance.relativeBalanceError(content) << ", alpha in [" << gMin(alpha.primitiveField()) << ", "
                 << gMax(alpha.primitiveField()) << "], packed cells with p <= 0: " << balance.lastTensionFraction()
                 << endl;
+            if (dilatancy.enabled())
+            {
+                const volScalarField& phiP = dilatancy.solidFraction();
+                const scalarField packed(pos0(alpha.primitiveField() - 0.5));
+                Info<< "dilatancy: powder solid fraction in [" << gMin(phiP.primitiveField() + (1 - packed))
+                    << ", " << gMax(phiP.primitiveField()*packed) << "] (alpha >= 0.5), div U in ["
+                    << gMin(dilatancy.source().primitiveField()) << ", " << gMax(dilatancy.source().primitiveField())
+                    << "] 1/s" << endl;
+            }
             if (const auto* temperature = mixture.temperature())
             {
                 Info<< "granular temperature T in [" << gMin(temperature->T().primitiveField()) << ", "
@@ -429,8 +478,8 @@ int main(int argc, char* argv[])
 
         balance.reportIterations();
         Info<< "powder mass conservation: initial " << balance.initialMass() << " kg, in domain "
-            << balance.powderMass(alpha) << " kg, discharged " << balance.discharged() << " kg, relative error "
-            << balance.relativeBalanceError(alpha) << nl << "End" << nl << endl;
+            << balance.powderMass(content) << " kg, discharged " << balance.discharged() << " kg, relative error "
+            << balance.relativeBalanceError(content) << nl << "End" << nl << endl;
     }
     catch (const ::granair::Error& e)
     {

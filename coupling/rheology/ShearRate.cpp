@@ -10,4 +10,10 @@ double shearRate(const Eigen::Matrix3d& gradU) {
     return std::sqrt(2.0 * d.cwiseProduct(d).sum());
 }
 
+double deviatoricShearRate(const Eigen::Matrix3d& gradU) {
+    Eigen::Matrix3d d = 0.5 * (gradU + gradU.transpose());
+    d.diagonal().array() -= d.trace() / 3.0;
+    return std::sqrt(2.0 * d.cwiseProduct(d).sum());
+}
+
 }  // namespace granair

@@ -51,6 +51,20 @@ check "$d" "granularProperties.*etaMax = -1" || fails=$((fails+1))
 d=$(variant removed_pressure_floor); sed -i "s/^\( *etaMax *[^;]*;\)/\1 pMin 1;/" "$d/$props"
 check "$d" "granularProperties', key 'rheology.pMin': the pressure floor pMin was removed" || fails=$((fails+1))
 
+# dilatancy (Dilatancy.H): only with muI, a positive rate, and rho_b <= rho_p.
+d=$(variant dilatancy_latz)
+sed -i "s/type        muI;/$latz/" "$d/$props"; sed -i 's/^outletPatch .*/&\ndilatancy on;/' "$d/$props"
+cp "$case_dir/latzSchmidt/0/T" "$d/0/T"
+check "$d" "key 'dilatancy': dilatancy needs a pressure/shear-rate rheology \\(muI\\); 'latzSchmidt'" || fails=$((fails+1))
+
+d=$(variant dilatancy_bad_rate); sed -i 's/^outletPatch .*/&\ndilatancy on; dilatancyRate -1;/' "$d/$props"
+check "$d" "key 'dilatancyRate': value -1 outside \\(0, 1e6\\)" || fails=$((fails+1))
+
+d=$(variant dilatancy_dense_bulk); sed -i 's/^outletPatch .*/&\ndilatancy on;/' "$d/$props"
+sed -i 's/^    rho         900;/    rho         2000;/' "$d/$props"
+check "$d" "key 'powder.rho': the bulk density 2000 kg/m3 must not exceed the particle density rheology \\{ rhoP \\} 1500" \
+  || fails=$((fails+1))
+
 d=$(variant bad_wall_friction); sed -i 's/frictionCoefficient 0.3;/frictionCoefficient -0.3;/' "$d/0/U"
 check "$d" "patch wall, field U: frictionCoefficient = -0.3, expected a wall friction coefficient" || fails=$((fails+1))
 
