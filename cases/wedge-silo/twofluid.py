@@ -24,7 +24,7 @@ air temperature from the energy equation the solver always solves, measured).
 A run goes in chunks of --chunk s (log/chunks.json records each one's CPU
 and wall time; --resume goes on from the newest time folder) and ends at
 --end or once half the fill has left, the end of the DEM case's window.
-Per run OUT/b<b>_<air|noair>/: timeseries.csv (t, W [kg/s] through the
+Per run OUT/b<b>_<air|noair>/: timeseries.csv (1 ms means: t, W [kg/s] through the
 outlet and the open sides below the slot, outlet dp/dz [Pa/m] on the axis
 between the cell centres just above and below the slot plane, the mean solid
 fraction of the cell row just above the slot), summary.txt (their means over
@@ -43,6 +43,7 @@ import parameters as P
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 T = os.path.join(HERE, "two-fluid", "template")
+SERIES_BLOCK = 1e-3     # [s] timeseries.csv's block means
 
 
 def numbers(a, b_mm, air):
@@ -166,9 +167,17 @@ def post(run, out, name, v, wall=None):
     n = min(len(t), len(pr), len(flows["freefall"]), len(row))
     t, w, dpdz = t[:n], w[:n], (pr[:n, 1] - pr[:n, 2]) / (2 * v["PROBE_Z"])
     alpha = row[:n, 1:].mean(axis=1)
-    gc.series.write_csv(os.path.join(out, "timeseries.csv"),
-                        [("t", t), ("mass_flow_kg_s", w), ("outlet_dpdz_Pa_m", dpdz), ("slot_row_alpha", alpha)])
     dt = gc.series.step_lengths(t)
+    # timeseries.csv: means over 1 ms (each row t ends its block; a b/8 run has
+    # ~100 steps per ms); the window means below are over the steps themselves
+    centres, blocks = gc.series.window_means(t, dt, [w, dpdz, alpha], SERIES_BLOCK, keep_last=0.0)
+    ends = np.empty_like(centres)
+    start = float(t[0] - dt[0])
+    for i, c in enumerate(centres):
+        ends[i] = start = 2 * c - start
+    gc.series.write_csv(os.path.join(out, "timeseries.csv"),
+                        [("t", ends), ("mass_flow_kg_s", blocks[0]), ("outlet_dpdz_Pa_m", blocks[1]),
+                         ("slot_row_alpha", blocks[2])])
     out_t = np.cumsum(w * dt)
     # The DEM case's steady window: from min(0.3 s, t1/2) to t1, t1 the time
     # half of the fill has left (or the end of the run).
@@ -206,31 +215,16 @@ def post(run, out, name, v, wall=None):
 
 def half_out(run, fill_g):
     """The time half the fill had left (the DEM window's end), or None: from the
-    outlet and free-fall flow files as far as they are written (a row being
-    written is skipped)."""
-    t, w = {}, {}
-    for patch in ("outlet", "freefall"):
-        base = os.path.join(run, "postProcessing", f"{patch}Flow")
-        for sub in os.listdir(base) if os.path.isdir(base) else []:
-            for f in os.listdir(os.path.join(base, sub)):
-                with open(os.path.join(base, sub, f)) as fh:
-                    for line in fh:
-                        x = line.split()
-                        if len(x) >= 2 and not line.startswith("#"):
-                            try:
-                                t.setdefault(patch, []).append(float(x[0]))
-                                w.setdefault(patch, {})[float(x[0])] = float(x[1])
-                            except ValueError:
-                                pass
-    if len(w) < 2:
+    outlet and free-fall flow files as far as they are written (read as post()
+    reads them; a file caught mid-row is read again at the next poll)."""
+    try:
+        o, f = (read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2) for patch in ("outlet", "freefall"))
+    except (ValueError, gc.CaseError):
         return None
-    times = np.array(sorted(set(w["outlet"]) & set(w["freefall"])))
-    if times.size < 2:
-        return None
-    flow = np.array([w["outlet"][x] + w["freefall"][x] for x in times])
-    out = np.cumsum(flow * gc.series.step_lengths(times))
+    n = min(len(o), len(f))
+    out = np.cumsum((o[:n, 1] + f[:n, 1]) * gc.series.step_lengths(o[:n, 0]))
     k = np.nonzero(out >= 0.5e-3 * fill_g)[0]
-    return float(times[k[0]]) if k.size else None
+    return float(o[k[0], 0]) if k.size else None
 
 
 def run_one(a, b_mm, air):
