@@ -329,8 +329,8 @@ def main():
     if a.setup_only:
         return 0
     # summary.csv over the runs in OUT: those of an earlier call (another --air) are kept
-    path = os.path.join(a.out, "summary.csv")
-    rows = [x for x in gc.series.read_table(path) if x["run"] not in res] if os.path.exists(path) else []
+    summary = os.path.join(a.out, "summary.csv")
+    rows = [x for x in gc.series.read_table(summary) if x["run"] not in res] if os.path.exists(summary) else []
     for name, r in sorted(res.items()):
         dem = {}
         for ref in ("reference-demo", f"reference-study-b{r['b_mm']}"):
@@ -342,7 +342,7 @@ def main():
         r.update({f"W_{k}": w for k, (w, g) in dem.items()})
         r.update({f"dpdz_{k}": g for k, (w, g) in dem.items()})
         rows.append(r)
-    gc.series.write_rows(path, sorted(rows, key=lambda x: x["run"]))
+    gc.series.write_rows(summary, sorted(rows, key=lambda x: x["run"]))
     return 0
 
 
