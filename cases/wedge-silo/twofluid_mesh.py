@@ -2,7 +2,7 @@
 """Mesh study of the wedge silo's two-fluid level at b = 10 mm (docs/two-fluid-model.md
 "On a silo"), from finished twofluid.py runs that differ only in --mesh.
 
-    twofluid_mesh.py --runs DIR [DIR ...] [--out DIR]
+    twofluid_mesh.py --runs DIR [DIR ...] [--out DIR] [--level]
 
 Each DIR is a twofluid.py --out folder with the runs b10_air and b10_noair
 (summary.txt, level.json, cost.txt, timeseries.csv of each). Writes
@@ -13,7 +13,9 @@ outlet dp/dz and the slot row's solid fraction of the air run, the CPU
 seconds; how steady each window is (the spread of its 50 ms means and the
 drift of a straight-line fit over it, relative to W); Roache's grid
 convergence index (gc.gci, safety factor 1.25, h = 1/N) of each quantity
-over the three finest meshes where it is monotonic.
+over the three finest meshes where it is monotonic. --level: the W study
+goes into the finest mesh's b10_air / b10_noair level.json as "mesh_study"
+(the compare tool's line on it).
 """
 import json
 import os
@@ -48,6 +50,7 @@ def one(d, air):
 def main():
     ap = gc.cli.parser(__doc__)
     ap.add_argument("--runs", nargs="+", required=True)
+    ap.add_argument("--level", action="store_true", help="write the W study into the finest mesh's level.json files")
     a = gc.cli.parse(ap, os.path.join(HERE, "reference-two-fluid-mesh"))
     rows, series = [], {}
     for d in a.runs:
@@ -118,6 +121,17 @@ def main():
     fig.suptitle(f"wedge silo b = {B} mm, two-fluid level: mesh study", fontsize=10)
     fig.tight_layout()
     gc.plots.save(fig, os.path.join(a.out, "mesh.png"))
+    if a.level and len(three) == 3:
+        fine = next(d for d in a.runs if one(d, True)["N"] == three[0]["N"])
+        for k, air in (("W_air_kg_s", True), ("W_dry_kg_s", False)):
+            path = os.path.join(fine, f"b{B}_{'air' if air else 'noair'}", "level.json")
+            g = study[k]
+            lv = gc.levels.read(path)
+            lv["mesh_study"] = dict(N=[r["N"] for r in three], W=[r[k] for r in three], order=g["order"],
+                                    extrapolated=g["extrapolated"], gci_fine=g["gci_fine"],
+                                    convergence=g["convergence"],
+                                    source=os.path.relpath(os.path.join(a.out, "mesh.json"), os.path.dirname(path)))
+            gc.levels.write(path, **lv)
     return 0
 
 
