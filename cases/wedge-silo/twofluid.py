@@ -9,7 +9,7 @@ where the air hardly slows the discharge; docs/two-fluid-model.md "On a
 silo" gives the mechanism and the remaining disagreement with DEM-CFD).
 Not yet a study: one coarse mesh, one slot width.
 
-    twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--chunk T] [--resume] [--mesh N]
+    twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--chunk T] [--resume] [--past-half] [--mesh N]
                 [--air-mu-factor F] [--shear-pressure on|off] [--out DIR] [--setup-only]
 
 The silo, its fill and the mu(I) block are the continuum level's
@@ -23,7 +23,8 @@ lighter air, 1/100 or 1/10 of it, stopped in the start-up with a negative
 air temperature from the energy equation the solver always solves, measured).
 A run goes in chunks of --chunk s (log/chunks.json records each one's CPU
 and wall time; --resume goes on from the newest time folder) and ends at
---end or once half the fill has left, the end of the DEM case's window.
+--end or once half the fill has left, the end of the DEM case's window
+(--past-half: at --end, a steadiness check; the window stays the DEM's).
 Per run OUT/b<b>_<air|noair>/: timeseries.csv (1 ms means: t, W [kg/s] through the
 outlet and the open sides below the slot, outlet dp/dz [Pa/m] on the axis
 between the cell centres just above and below the slot plane, the mean solid
@@ -279,7 +280,7 @@ def run_one(a, b_mm, air):
                 gc.foam.set_entry(control, key, value)
             return {"from": 0.0, "to": 2e-4, "cpu_s": cpu, "what": "mesh and start-up"}
         t0 = gc.foam.time_dirs(run)[-1][0]
-        if rec["chunks"][-1].get("half_out_s") is not None:
+        if rec["chunks"][-1].get("half_out_s") is not None and not a.past_half:
             return f"half the fill out at t = {rec['chunks'][-1]['half_out_s']:g} s"
         if t0 >= a.end - 1e-9:
             return f"t_end = {a.end:g} s"
@@ -288,7 +289,8 @@ def run_one(a, b_mm, air):
         gc.foam.set_entry(control, "endTime", f"{t1:.10g}")
         print(f"wedge-silo two-fluid {name}: {t0:g} -> {t1:g} s", flush=True)
         cpu = gc.runner.run(["twoPhaseEulerFoam"], run, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
-                            stop_when=lambda: half_out(run, v["FILL_G"]) is not None, poll=20.0)
+                            stop_when=None if a.past_half else lambda: half_out(run, v["FILL_G"]) is not None,
+                            poll=20.0)
         return {"from": t0, "to": gc.foam.time_dirs(run)[-1][0], "cpu_s": cpu,
                 "half_out_s": half_out(run, v["FILL_G"])}
 
@@ -311,6 +313,8 @@ def main():
                     help="longest simulated time [s] (default 0.6); a run ends earlier once half the fill has left")
     ap.add_argument("--chunk", type=float, default=0.1,
                     help="simulated time per solver call [s], also the field output interval (default 0.1)")
+    ap.add_argument("--past-half", action="store_true",
+                    help="go on to --end after half the fill has left (a steadiness check; the window stays the DEM's)")
     ap.add_argument("--resume", action="store_true",
                     help="go on with the runs already in OUT/runs (set up with the same numbers) to --end")
     ap.add_argument("--mesh", type=int, default=4, help="cells across the slot (default 4: square cells of b/4)")
