@@ -287,12 +287,19 @@ def run_one(a, b_mm, air):
         t1 = min(a.end, (np.floor(t0 / a.chunk + 1e-6) + 1) * a.chunk)
         gc.foam.set_entry(control, "stopAt", "endTime")
         gc.foam.set_entry(control, "endTime", f"{t1:.10g}")
+        # OpenFOAM counts write times from the start time and does not write at
+        # endTime: one interval from t0 to t1 makes t1 a write time (a run
+        # stopped at half the fill out starts off the 0.1 s grid)
+        gc.foam.set_entry(control, "writeInterval", f"{t1 - t0:.10g}")
         print(f"wedge-silo two-fluid {name}: {t0:g} -> {t1:g} s", flush=True)
         cpu = gc.runner.run(["twoPhaseEulerFoam"], run, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
                             stop_when=None if a.past_half else lambda: half_out(run, v["FILL_G"]) is not None,
                             poll=20.0)
-        return {"from": t0, "to": gc.foam.time_dirs(run)[-1][0], "cpu_s": cpu,
-                "half_out_s": half_out(run, v["FILL_G"])}
+        got, half = gc.foam.time_dirs(run)[-1][0], half_out(run, v["FILL_G"])
+        if got < t1 - 1e-9 and (half is None or a.past_half):
+            raise gc.CaseError(f"{run}: twoPhaseEulerFoam ended without writing t = {t1:g} s (newest: {got:g} s); "
+                               f"see log/twoPhaseEulerFoam_{t0:g}-{t1:g}.log")
+        return {"from": t0, "to": got, "cpu_s": cpu, "half_out_s": half}
 
     rec = gc.chunks.loop(run, step)
     print(f"wedge-silo two-fluid {name}: {rec['reason']}", flush=True)

@@ -38,7 +38,7 @@ def one(d, air):
     t, w = ts["t"], ts["mass_flow_kg_s"]
     t0, t1 = float(s["window_t0_s"]), float(s["window_t1_s"])
     sel = (t >= t0) & (t <= t1)
-    _, (blocks,) = gc.series.window_means(t[sel], gc.series.step_lengths(t[sel], t0), [w[sel]], BLOCK)
+    _, (blocks,) = gc.series.window_means(t[sel], gc.series.step_lengths(t[sel], t0), [w[sel]], BLOCK, keep_last=0.5)
     W = float(s["W_kg_s"])
     drift = gc.series.slope(t, w, t0, t1) * (t1 - t0) / W
     return dict(W=W, dpdz=float(s["outlet_dpdz_Pa_m"]), alpha=float(s["slot_row_alpha"]), t0=t0, t1=t1,
