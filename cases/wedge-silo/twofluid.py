@@ -3,11 +3,12 @@
 granair's muI frictional stress, granair drag (ErgunGidaspow on the lactose's
 225 um grains) and Coulomb walls (libgranairTwoFluid.so, docs/two-fluid-model.md).
 
-Status: b = 10 mm with and without air run (reference-two-fluid/, with the
-shear-induced pressure; reference-two-fluid-no-shear-pressure/ without it,
-where the air hardly slows the discharge; docs/two-fluid-model.md "On a
-silo" gives the mechanism and the remaining disagreement with DEM-CFD).
-Not yet a study: one coarse mesh, one slot width.
+Status: b = 10 mm with and without air on meshes b/4, b/6, b/8
+(reference-two-fluid-mesh/, twofluid_mesh.py: no mesh convergence);
+reference-two-fluid/ and reference-two-fluid-no-shear-pressure/ are earlier
+b/4 runs from undefined wall values (see run_one); docs/two-fluid-model.md
+"On a silo" gives the measurements and the disagreement with DEM-CFD.
+One slot width.
 
     twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--chunk T] [--resume] [--past-half] [--mesh N]
                 [--air-mu-factor F] [--shear-pressure on|off] [--out DIR] [--setup-only]
