@@ -138,19 +138,22 @@ boundary
 
 def read_series(run, name, file, columns):
     """Rows of a function object's output over every restart, in time order: the
-    files postProcessing/<name>/<t0>/<file> and, where a restart wrote into the
-    same folder, <stem>_<t>.dat beside it. A later restart's rows replace an
-    earlier file's from its first time on (a chunk killed past its last written
-    time is run again from there)."""
+    files postProcessing/<name>/<t0>/<file> or, where a restart from t0 wrote
+    into the same folder, the newest of them (<stem>_<t>.dat beside it). A
+    later restart's rows replace an earlier file's from its first time on (a
+    chunk killed past its last written time is run again from there)."""
     base = os.path.join(run, "postProcessing", name)
     stem, ext = os.path.splitext(file)
     parts = []
     for sub in os.listdir(base):
-        for f in os.listdir(os.path.join(base, sub)):
-            if f == file or (f.startswith(stem + "_") and f.endswith(ext)):
-                d = np.loadtxt(os.path.join(base, sub, f), comments="#", ndmin=2)[:, :columns]
-                if len(d):
-                    parts.append(d)
+        # a restart from a folder's time writes <stem>_<t> beside the first run's
+        # file (surface values) or overwrites it (probes): the newest file counts
+        files = [os.path.join(base, sub, f) for f in os.listdir(os.path.join(base, sub))
+                 if f == file or (f.startswith(stem + "_") and f.endswith(ext))]
+        if files:
+            d = np.loadtxt(max(files, key=os.path.getmtime), comments="#", ndmin=2)[:, :columns]
+            if len(d):
+                parts.append(d)
     if not parts:
         raise gc.CaseError(f"{base}: no {file} written")
     parts.sort(key=lambda d: d[0, 0])
@@ -160,13 +163,19 @@ def read_series(run, name, file, columns):
 
 def post(run, out, name, v, wall=None):
     os.makedirs(out, exist_ok=True)
-    flows = {patch: read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2)
+    pr = read_series(run, "orificePressure", "p", 3)
+    row = read_series(run, "slotRow", "alpha.particles", 1 + v["N"])
+    # The main run's probes overwrite the start-up's file, the surface values
+    # keep it beside theirs: the rows before the probes' first time (the
+    # start-up's first ~11 us) are left out, so every series has the same steps
+    flows = {patch: (lambda d: d[d[:, 0] >= pr[0, 0] * (1 - 1e-9)])(
+                 read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2))
              for patch in ("outlet", "freefall", "atmosphere")}
     t = flows["outlet"][:, 0]
     w = flows["outlet"][:, 1] + flows["freefall"][:, 1]      # boundary fluxes are positive outwards
-    pr = read_series(run, "orificePressure", "p", 3)
-    row = read_series(run, "slotRow", "alpha.particles", 1 + v["N"])
     n = min(len(t), len(pr), len(flows["freefall"]), len(row))
+    if not (np.allclose(t[:n], pr[:n, 0], rtol=1e-6) and np.allclose(t[:n], row[:n, 0], rtol=1e-6)):
+        raise gc.CaseError(f"{run}/postProcessing: the flow and probe files are not on the same time steps")
     t, w, dpdz = t[:n], w[:n], (pr[:n, 1] - pr[:n, 2]) / (2 * v["PROBE_Z"])
     alpha = row[:n, 1:].mean(axis=1)
     dt = gc.series.step_lengths(t)
