@@ -3,14 +3,15 @@
 granair's muI frictional stress, granair drag (ErgunGidaspow on the lactose's
 225 um grains) and Coulomb walls (libgranairTwoFluid.so, docs/two-fluid-model.md).
 
-Status: b = 10 mm with and without air run (reference-two-fluid/, with the
-shear-induced pressure; reference-two-fluid-no-shear-pressure/ without it,
-where the air hardly slows the discharge; docs/two-fluid-model.md "On a
-silo" gives the mechanism and the remaining disagreement with DEM-CFD).
-Not yet a study: one coarse mesh, one slot width.
+Status: b = 10 mm with and without air on meshes b/4, b/6, b/8
+(reference-two-fluid-mesh/, twofluid_mesh.py: no mesh convergence);
+reference-two-fluid/ and reference-two-fluid-no-shear-pressure/ are earlier
+b/4 runs from undefined wall values (see run_one); docs/two-fluid-model.md
+"On a silo" gives the measurements and the disagreement with DEM-CFD.
+One slot width.
 
-    twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--mesh N] [--air-mu-factor F]
-                [--shear-pressure on|off] [--out DIR] [--setup-only]
+    twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--chunk T] [--resume] [--past-half] [--mesh N]
+                [--air-mu-factor F] [--shear-pressure on|off] [--out DIR] [--setup-only]
 
 The silo, its fill and the mu(I) block are the continuum level's
 (continuum.py numbers(): the same mesh with its free-fall region, the DEM
@@ -21,10 +22,16 @@ is 1/100 of the real one (the inertial term stays: the dry runs' slot dp/dz
 is 1/9 to 1/13 of the air runs', measured); its density stays (a
 lighter air, 1/100 or 1/10 of it, stopped in the start-up with a negative
 air temperature from the energy equation the solver always solves, measured).
-Per run OUT/b<b>_<air|noair>/: timeseries.csv (t, W [kg/s] through the
+A run goes in chunks of --chunk s (log/chunks.json records each one's CPU
+and wall time; --resume goes on from the newest time folder) and ends at
+--end or once half the fill has left, the end of the DEM case's window
+(--past-half: at --end, a steadiness check; the window stays the DEM's).
+Per run OUT/b<b>_<air|noair>/: timeseries.csv (1 ms means: t, W [kg/s] through the
 outlet and the open sides below the slot, outlet dp/dz [Pa/m] on the axis
-between the cell centres just above and below the slot plane), summary.csv
-over all runs with the DEM-CFD demo's and study's rates.
+between the cell centres just above and below the slot plane, the mean solid
+fraction of the cell row just above the slot), summary.txt (their means over
+the window), cost.txt (CPU s of all chunks, cells); summary.csv over the runs
+in OUT with the DEM-CFD demo's and study's rates.
 """
 import os
 import re
@@ -38,14 +45,16 @@ import parameters as P
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 T = os.path.join(HERE, "two-fluid", "template")
+SERIES_BLOCK = 1e-3     # [s] timeseries.csv's block means
 
 
 def numbers(a, b_mm, air):
     c = types.SimpleNamespace(fills="demo", rheology_from="literature", freefall=None, rheology="muI",
                               mesh=a.mesh, end=a.end, walls="coulomb", wall_friction=P.WALL_FRICTION,
-                              write_every=a.end / 10, rheology_d=None, dem_size="demo", eta_min=None)
+                              write_every=a.chunk, rheology_d=None, dem_size="demo", eta_min=None)
     v = continuum.numbers(c, b_mm, air)
     phi = v["RHO_B"] / P.RHO_P
+    dx = b_mm * 1e-3 / a.mesh
     v.update(D=P.D_LACTOSE, D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81,
              RHO_F=P.AIR_RHO, MU=P.AIR_MU * (a.air_mu_factor if air else 0.01), AIR_EOS="rhoConst",
              DRAG_LAW="ErgunGidaspow", PHI_FILL=phi,
@@ -59,7 +68,11 @@ def numbers(a, b_mm, air):
              # the dp/dz probes at the cell centres beside the slot plane: a probe
              # returns its cell's value, so probes at +-1 mm read the centres at
              # +-dx/2 (+-1.25 mm at b/4) and (p1 - p2)/2 mm overstated dp/dz by 25 %
-             PROBE_Z=b_mm * 1e-3 / (2 * a.mesh), AIR_MU_FACTOR=a.air_mu_factor if air else 0.01)
+             PROBE_Z=b_mm * 1e-3 / (2 * a.mesh), AIR_MU_FACTOR=a.air_mu_factor if air else 0.01,
+             # the slot row's solid fraction: a probe at each of its N cell centres
+             # (equal cells, so their mean is the row's mean)
+             SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dx - v['B']:.9g} {P.DEPTH / 2:.6g} {dx / 2:.9g})"
+                                      for i in range(a.mesh)))
     return v
 
 
@@ -125,38 +138,57 @@ boundary
 
 def read_series(run, name, file, columns):
     """Rows of a function object's output over every restart, in time order: the
-    files postProcessing/<name>/<t0>/<file> and, where a restart wrote into the
-    same folder, <stem>_<t>.dat beside it."""
+    files postProcessing/<name>/<t0>/<file> or, where a restart from t0 wrote
+    into the same folder, the newest of them (<stem>_<t>.dat beside it). A
+    later restart's rows replace an earlier file's from its first time on (a
+    chunk killed past its last written time is run again from there)."""
     base = os.path.join(run, "postProcessing", name)
     stem, ext = os.path.splitext(file)
     parts = []
     for sub in os.listdir(base):
-        for f in os.listdir(os.path.join(base, sub)):
-            if f == file or (f.startswith(stem + "_") and f.endswith(ext)):
-                d = np.loadtxt(os.path.join(base, sub, f), comments="#", ndmin=2)[:, :columns]
-                if len(d):
-                    parts.append(d)
+        # a restart from a folder's time writes <stem>_<t> beside the first run's
+        # file (surface values) or overwrites it (probes): the newest file counts
+        files = [os.path.join(base, sub, f) for f in os.listdir(os.path.join(base, sub))
+                 if f == file or (f.startswith(stem + "_") and f.endswith(ext))]
+        if files:
+            d = np.loadtxt(max(files, key=os.path.getmtime), comments="#", ndmin=2)[:, :columns]
+            if len(d):
+                parts.append(d)
     if not parts:
         raise gc.CaseError(f"{base}: no {file} written")
     parts.sort(key=lambda d: d[0, 0])
-    rows = [parts[0]]
-    for d in parts[1:]:
-        rows.append(d[d[:, 0] > rows[-1][-1, 0]])
+    rows = [d[d[:, 0] < nxt[0, 0]] for d, nxt in zip(parts, parts[1:])] + [parts[-1]]
     return np.concatenate(rows)
 
 
 def post(run, out, name, v, wall=None):
     os.makedirs(out, exist_ok=True)
-    flows = {patch: read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2)
+    pr = read_series(run, "orificePressure", "p", 3)
+    row = read_series(run, "slotRow", "alpha.particles", 1 + v["N"])
+    # The main run's probes overwrite the start-up's file, the surface values
+    # keep it beside theirs: the rows before the probes' first time (the
+    # start-up's first ~11 us) are left out, so every series has the same steps
+    flows = {patch: (lambda d: d[d[:, 0] >= pr[0, 0] * (1 - 1e-9)])(
+                 read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2))
              for patch in ("outlet", "freefall", "atmosphere")}
     t = flows["outlet"][:, 0]
     w = flows["outlet"][:, 1] + flows["freefall"][:, 1]      # boundary fluxes are positive outwards
-    pr = read_series(run, "orificePressure", "p", 3)
-    n = min(len(t), len(pr), len(flows["freefall"]))
+    n = min(len(t), len(pr), len(flows["freefall"]), len(row))
+    if not (np.allclose(t[:n], pr[:n, 0], rtol=1e-6) and np.allclose(t[:n], row[:n, 0], rtol=1e-6)):
+        raise gc.CaseError(f"{run}/postProcessing: the flow and probe files are not on the same time steps")
     t, w, dpdz = t[:n], w[:n], (pr[:n, 1] - pr[:n, 2]) / (2 * v["PROBE_Z"])
-    gc.series.write_csv(os.path.join(out, "timeseries.csv"),
-                        [("t", t), ("mass_flow_kg_s", w), ("outlet_dpdz_Pa_m", dpdz)])
+    alpha = row[:n, 1:].mean(axis=1)
     dt = gc.series.step_lengths(t)
+    # timeseries.csv: means over 1 ms (each row t ends its block; a b/8 run has
+    # ~100 steps per ms); the window means below are over the steps themselves
+    centres, blocks = gc.series.window_means(t, dt, [w, dpdz, alpha], SERIES_BLOCK, keep_last=0.0)
+    ends = np.empty_like(centres)
+    start = float(t[0] - dt[0])
+    for i, c in enumerate(centres):
+        ends[i] = start = 2 * c - start
+    gc.series.write_csv(os.path.join(out, "timeseries.csv"),
+                        [("t", ends), ("mass_flow_kg_s", blocks[0]), ("outlet_dpdz_Pa_m", blocks[1]),
+                         ("slot_row_alpha", blocks[2])])
     out_t = np.cumsum(w * dt)
     # The DEM case's steady window: from min(0.3 s, t1/2) to t1, t1 the time
     # half of the fill has left (or the end of the run).
@@ -165,8 +197,10 @@ def post(run, out, name, v, wall=None):
     t0 = min(P.STEADY_FROM, 0.5 * t1)
     W = gc.series.time_mean(t, w, t0, t1, dt=dt)
     G = gc.series.time_mean(t, dpdz, t0, t1, dt=dt)
+    A = gc.series.time_mean(t, alpha, t0, t1, dt=dt)
     out_kg = float(out_t[-1])
-    gc.series.write_keys(os.path.join(out, "summary.txt"), [("W_kg_s", W), ("outlet_dpdz_Pa_m", G), ("window_t0_s", t0),
+    gc.series.write_keys(os.path.join(out, "summary.txt"), [("W_kg_s", W), ("outlet_dpdz_Pa_m", G),
+                                                             ("slot_row_alpha", A), ("window_t0_s", t0),
                                                              ("window_t1_s", t1), ("t_end_s", float(t[-1])),
                                                              ("discharged_g", out_kg * 1e3), ("fill_g", v["FILL_G"])])
     air = bool(v["AIR"])
@@ -184,39 +218,107 @@ def post(run, out, name, v, wall=None):
                               if air else "air at 1/100 viscosity (dry)")),
                     b_mm=v["B_MM"], air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
                     outlet_dpdz_Pa_m=G if air else None, wall_time_s=wall, cores=1, timeseries="timeseries.csv")
-    print(f"wedge-silo two-fluid {name}: W = {W:.4g} kg/s, outlet dp/dz {G:.4g} Pa/m over [{t0:.3g}, {t1:.3g}] s; "
-          f"{out_kg * 1e3:.1f} g out of {v['FILL_G']:.1f} g", flush=True)
-    return dict(run=name, b_mm=v["B_MM"], air=int(v["AIR"]), W_kg_s=W, outlet_dpdz_Pa_m=G, t0_s=t0, t1_s=t1,
-                discharged_g=out_kg * 1e3, fill_g=v["FILL_G"])
+    print(f"wedge-silo two-fluid {name}: W = {W:.4g} kg/s, outlet dp/dz {G:.4g} Pa/m, slot row alpha {A:.3f} "
+          f"over [{t0:.3g}, {t1:.3g}] s; {out_kg * 1e3:.1f} g out of {v['FILL_G']:.1f} g", flush=True)
+    return dict(run=name, b_mm=v["B_MM"], mesh=v["N"], air=int(v["AIR"]), W_kg_s=W, outlet_dpdz_Pa_m=G,
+                slot_row_alpha=A, t0_s=t0, t1_s=t1, discharged_g=out_kg * 1e3, fill_g=v["FILL_G"])
+
+
+def half_out(run, fill_g):
+    """The time half the fill had left (the DEM window's end), or None: from the
+    outlet and free-fall flow files as far as they are written (read as post()
+    reads them; a file caught mid-row is read again at the next poll)."""
+    try:
+        o, f = (read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2) for patch in ("outlet", "freefall"))
+    except (ValueError, gc.CaseError):
+        return None
+    n = min(len(o), len(f))
+    out = np.cumsum((o[:n, 1] + f[:n, 1]) * gc.series.step_lengths(o[:n, 0]))
+    k = np.nonzero(out >= 0.5e-3 * fill_g)[0]
+    return float(o[k[0], 0]) if k.size else None
 
 
 def run_one(a, b_mm, air):
+    """One run in chunks of --chunk s (gc.chunks.loop, record log/chunks.json):
+    the mesh and the start-up, then twoPhaseEulerFoam from its newest time to
+    the next chunk end, until --end or until half the fill has left (the end
+    of the DEM case's window; a chunk is stopped there with writeNow). With
+    --resume a run folder set up with the same numbers goes on where it
+    stopped (a longer --end goes further)."""
     name = f"b{b_mm}_{'air' if air else 'noair'}"
-    run = gc.runner.clean(os.path.join(a.out, "runs", name))
+    run = os.path.join(a.out, "runs", name)
     v = numbers(a, b_mm, air)
-    gc.template.render(T, run, v)
-    staircase(run, v, b_mm * 1e-3)
+    keep = {k: x for k, x in v.items() if k != "END"}      # a resumed run may go further
+    values = os.path.join(run, "values.json")
+    control = os.path.join(run, "system", "controlDict")
+    if a.resume and os.path.exists(values):
+        gc.template.check_values(values, keep, "rerun without --resume to start again")
+    else:
+        gc.runner.clean(run)
+        gc.template.render(T, run, v)
+        staircase(run, v, b_mm * 1e-3)
+        gc.template.save_values(values, keep)
     if a.setup_only:
         return None
-    cpu = 0.0
-    for cmd in (["blockMesh"], ["topoSet"], ["subsetMesh", "silo", "-patch", "walls", "-overwrite"],
-                ["checkMesh"], ["setFields"]):
-        cpu += gc.runner.run(cmd, run)
-    print(f"wedge-silo two-fluid {name}: {gc.foam.checkmesh(os.path.join(run, 'log', 'checkMesh.log'))[0]} cells, "
-          f"up to t = {a.end:g} s", flush=True)
-    # Start-up: 200 fixed steps of 1 us. With the adjustable step from 1e-5 s
-    # the powder over the open slot blew up in the second step (air 200 m/s and
-    # 3.4 bar in the slot cells, measured); after 0.2 ms the adjustable step is
-    # stable, limited by the relative-velocity Courant number.
-    control = os.path.join(run, "system", "controlDict")
-    for key, value in (("endTime", 2e-4), ("deltaT", 1e-6), ("adjustTimeStep", "no")):
-        gc.foam.set_entry(control, key, value)
-    cpu += gc.runner.run(["twoPhaseEulerFoam"], run, "twoPhaseEulerFoam_startup")
-    for key, value in (("startFrom", "latestTime"), ("endTime", a.end), ("deltaT", 1e-5), ("adjustTimeStep", "yes")):
-        gc.foam.set_entry(control, key, value)
-    cpu += gc.runner.run(["twoPhaseEulerFoam"], run)
-    r = post(run, os.path.join(a.out, name), name, v)
-    r["cpu_s"] = cpu
+
+    def step(rec):
+        if not rec["chunks"]:
+            cpu = 0.0
+            for cmd in (["blockMesh"], ["topoSet"], ["subsetMesh", "silo", "-patch", "walls", "-overwrite"]):
+                cpu += gc.runner.run(cmd, run)
+            # subsetMesh maps the fields onto the cut mesh, but the faces it exposes
+            # (the staircase walls) get undefined patch values: the powder's
+            # coulombWallSlip valueFraction came out 1e5 on 62 of 226 wall faces in
+            # one b/4 set-up, 0 on 22 of 346 in a b/8 one, 1 in another (measured),
+            # and a first step with f = 1e5 is violent (outlet dp/dz ~ -1e8 Pa/m).
+            # The template's 0/ fields are uniform: written again, every wall
+            # face starts from the template's values.
+            gc.template.render(T, run, v, ["0"])
+            for cmd in (["checkMesh"], ["setFields"]):
+                cpu += gc.runner.run(cmd, run)
+            print(f"wedge-silo two-fluid {name}: "
+                  f"{gc.foam.checkmesh(os.path.join(run, 'log', 'checkMesh.log'))[0]} cells, "
+                  f"up to t = {a.end:g} s", flush=True)
+            # Start-up: 200 fixed steps of 1 us. With the adjustable step from 1e-5 s
+            # the powder over the open slot blew up in the second step (air 200 m/s and
+            # 3.4 bar in the slot cells, measured); after 0.2 ms the adjustable step is
+            # stable, limited by the relative-velocity Courant number.
+            for key, value in (("endTime", 2e-4), ("deltaT", 1e-6), ("adjustTimeStep", "no")):
+                gc.foam.set_entry(control, key, value)
+            cpu += gc.runner.run(["twoPhaseEulerFoam"], run, "twoPhaseEulerFoam_startup")
+            for key, value in (("startFrom", "latestTime"), ("deltaT", 1e-5), ("adjustTimeStep", "yes")):
+                gc.foam.set_entry(control, key, value)
+            return {"from": 0.0, "to": 2e-4, "cpu_s": cpu, "what": "mesh and start-up"}
+        t0 = gc.foam.time_dirs(run)[-1][0]
+        if rec["chunks"][-1].get("half_out_s") is not None and not a.past_half:
+            return f"half the fill out at t = {rec['chunks'][-1]['half_out_s']:g} s"
+        if t0 >= a.end - 1e-9:
+            return f"t_end = {a.end:g} s"
+        t1 = min(a.end, (np.floor(t0 / a.chunk + 1e-6) + 1) * a.chunk)
+        gc.foam.set_entry(control, "stopAt", "endTime")
+        gc.foam.set_entry(control, "endTime", f"{t1:.10g}")
+        # OpenFOAM counts write times from the start time and does not write at
+        # endTime: one interval from t0 to t1 makes t1 a write time (a run
+        # stopped at half the fill out starts off the 0.1 s grid)
+        gc.foam.set_entry(control, "writeInterval", f"{t1 - t0:.10g}")
+        print(f"wedge-silo two-fluid {name}: {t0:g} -> {t1:g} s", flush=True)
+        cpu = gc.runner.run(["twoPhaseEulerFoam"], run, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
+                            stop_when=None if a.past_half else lambda: half_out(run, v["FILL_G"]) is not None,
+                            poll=20.0)
+        got, half = gc.foam.time_dirs(run)[-1][0], half_out(run, v["FILL_G"])
+        if got < t1 - 1e-9 and (half is None or a.past_half):
+            raise gc.CaseError(f"{run}: twoPhaseEulerFoam ended without writing t = {t1:g} s (newest: {got:g} s); "
+                               f"see log/twoPhaseEulerFoam_{t0:g}-{t1:g}.log")
+        return {"from": t0, "to": got, "cpu_s": cpu, "half_out_s": half}
+
+    rec = gc.chunks.loop(run, step)
+    print(f"wedge-silo two-fluid {name}: {rec['reason']}", flush=True)
+    r = post(run, os.path.join(a.out, name), name, v, wall=sum(c["wall_s"] for c in rec["chunks"]))
+    r["cpu_s"] = rec["cpu_s"]
+    gc.series.write_keys(os.path.join(a.out, name, "cost.txt"),
+                         [("cpu_s", rec["cpu_s"]), ("wall_s", sum(c["wall_s"] for c in rec["chunks"])),
+                          ("cells", gc.foam.checkmesh(os.path.join(run, "log", "checkMesh.log"))[0]),
+                          ("t_end_s", gc.foam.time_dirs(run)[-1][0])])
     return r
 
 
@@ -224,7 +326,14 @@ def main():
     ap = gc.cli.parser(__doc__)
     ap.add_argument("--b", type=int, action="append", choices=[5, 10, 15], help="slot width [mm] (default 10)")
     ap.add_argument("--air", choices=["on", "off", "both"], default="both")
-    ap.add_argument("--end", type=float, default=0.6, help="simulated time [s] (default 0.6)")
+    ap.add_argument("--end", type=float, default=0.6,
+                    help="longest simulated time [s] (default 0.6); a run ends earlier once half the fill has left")
+    ap.add_argument("--chunk", type=float, default=0.1,
+                    help="simulated time per solver call [s], also the field output interval (default 0.1)")
+    ap.add_argument("--past-half", action="store_true",
+                    help="go on to --end after half the fill has left (a steadiness check; the window stays the DEM's)")
+    ap.add_argument("--resume", action="store_true",
+                    help="go on with the runs already in OUT/runs (set up with the same numbers) to --end")
     ap.add_argument("--mesh", type=int, default=4, help="cells across the slot (default 4: square cells of b/4)")
     # on by default: without it the powder leaves the slot as a dense plug and
     # the air hardly slows it (docs/two-fluid-model.md "On a silo", measured)
@@ -233,12 +342,16 @@ def main():
     ap.add_argument("--air-mu-factor", type=float, default=1.0,
                     help="diagnostic: the air run's air viscosity in units of the real one (default 1)")
     a = gc.cli.parse(ap, os.path.join(HERE, "two-fluid-results"))
+    if not (a.chunk > 0 and a.end > 0):
+        ap.error(f"--chunk {a.chunk:g} / --end {a.end:g}: expected times > 0 [s]")
     airs = {"on": [True], "off": [False], "both": [True, False]}[a.air]
     tasks = [(f"b{b}_{'air' if x else 'noair'}", run_one, (a, b, x)) for b in (a.b or [10]) for x in airs]
     res = gc.runner.pool(tasks, 2, "wedge-silo two-fluid")
     if a.setup_only:
         return 0
-    rows = []
+    # summary.csv over the runs in OUT: those of an earlier call (another --air) are kept
+    summary = os.path.join(a.out, "summary.csv")
+    rows = [x for x in gc.series.read_table(summary) if x["run"] not in res] if os.path.exists(summary) else []
     for name, r in sorted(res.items()):
         dem = {}
         for ref in ("reference-demo", f"reference-study-b{r['b_mm']}"):
@@ -250,7 +363,7 @@ def main():
         r.update({f"W_{k}": w for k, (w, g) in dem.items()})
         r.update({f"dpdz_{k}": g for k, (w, g) in dem.items()})
         rows.append(r)
-    gc.series.write_rows(os.path.join(a.out, "summary.csv"), rows)
+    gc.series.write_rows(summary, sorted(rows, key=lambda x: x["run"]))
     return 0
 
 
