@@ -146,17 +146,21 @@ bool CouplingStep::buildStencils(const OwnedParticles& owned) {
             reserveGrowing(stencilDelta_, others);
         solid_[centre] += scratch_.front().weight * vp;
         stencilWeight_.push_back(scratch_.front().weight);
-        for (std::size_t e = 1; e < scratch_.size(); ++e) {
-            const CellWeight& cw = scratch_[e];
-            solid_[cw.cell] += cw.weight * vp;
-            if (wideCells_) {
-                stencilCell_.push_back(cw.cell);
-            } else {
-                const int d = cw.cell - centre;
-                if (d < -maxDelta || d > maxDelta) return false;
-                stencilDelta_.push_back(static_cast<std::int16_t>(d));
+        const CellWeight* const end = scratch_.data() + scratch_.size();
+        if (wideCells_) {
+            for (const CellWeight* cw = scratch_.data() + 1; cw != end; ++cw) {
+                solid_[cw->cell] += cw->weight * vp;
+                stencilCell_.push_back(cw->cell);
+                stencilWeight_.push_back(cw->weight);
             }
-            stencilWeight_.push_back(cw.weight);
+        } else {
+            for (const CellWeight* cw = scratch_.data() + 1; cw != end; ++cw) {
+                const int d = cw->cell - centre;
+                if (d < -maxDelta || d > maxDelta) return false;  // solid_ is rebuilt then
+                solid_[cw->cell] += cw->weight * vp;
+                stencilDelta_.push_back(static_cast<std::int16_t>(d));
+                stencilWeight_.push_back(cw->weight);
+            }
         }
         offset_.push_back(static_cast<std::uint32_t>(stencilWeight_.size()));
     }
