@@ -397,8 +397,11 @@ void CoupledRun::forcesToDem()
         // The air's own pressure gradient (Gauss on its face pressure): at a
         // bed edge fvc::grad(p) with linearly interpolated face values gives
         // the edge cell about half the gradient its particles carry.
-        // Each force goes straight to its DEM slot or into the message to
-        // its DEM owner (no array of owned forces in between).
+        // Each force goes straight into LIGGGHTS' fluid-force store (this
+        // rank's particles) or into the message to its DEM owner, whose
+        // backwardSend() stores it: no per-particle array of forces on
+        // either side.
+        dem_->beginFluidForces();
         const volVectorField& gradP = air_->gradP();
         const ::granair::CouplingStep::Forces force = step_->forces
         (
@@ -406,9 +409,12 @@ void CoupledRun::forcesToDem()
             reinterpret_cast<const double*>(air_->U().primitiveField().cdata()),
             reinterpret_cast<const double*>(gradP.primitiveField().cdata())
         );
+        ::granair::dem::LiggghtsDriver& dem = *dem_;
         exchange_->backwardFill
         (
-            3, [&force](std::size_t k, double* f) { force(k, f); }, demForces_
+            3,
+            [&force](std::size_t k, double* f) { force(k, f); },
+            [&dem](std::size_t i, const double* f) { dem.setFluidForce(i, f); }
         );
     }
     {
@@ -416,7 +422,8 @@ void CoupledRun::forcesToDem()
         exchange_->backwardSend();
     }
     StageTimers::Scope s(timers_, StageTimers::DEM);
-    dem_->setFluidForces(demForces_.data(), particles_.size());
+    dem_->endFluidForces();
+    forcesSet_ = true;
 }
 
 
@@ -632,9 +639,14 @@ void CoupledRun::writeParticles(label k)
         return;
     }
     // The fluid force of this coupling step (at the start: from the initial
-    // air; zero with the air off), in the order of particles_.
-    const bool haveForces = air_ && demForces_.size() == 3*particles_.size();
-    particleVtk_->write(t, particles_, haveForces ? demForces_.data() : nullptr, particles_.size());
+    // air; none with the air off or at a restart's first write), in the order
+    // of particles_, read back from LIGGGHTS' store for this write only.
+    std::vector<double> forces;
+    if (air_ && forcesSet_)
+    {
+        dem_->getFluidForces(forces);
+    }
+    particleVtk_->write(t, particles_, forces.empty() ? nullptr : forces.data(), particles_.size());
     vtkNext_ = label(std::floor((t - vtkOrigin_ + tol)/run_.vtkInterval)) + 1;
 }
 
@@ -689,7 +701,7 @@ std::string CoupledRun::progressExtra(const ::granair::StepRecord& r) const
     ::granair::ResourceUsage::Buffers b;
     b.run = double
     (
-        capacityBytes(particles_) + owned_.bufferBytes() + capacityBytes(demForces_)
+        capacityBytes(particles_) + owned_.bufferBytes()
     );
     b.exchange = double(exchange_->bufferBytes());
     b.stepParticles = double(step_->particleBufferBytes());

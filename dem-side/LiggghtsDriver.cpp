@@ -171,11 +171,36 @@ void LiggghtsDriver::setFluidForces(const std::vector<Vec3>& forces) {
     setFluidForces(forces.empty() ? nullptr : forces.front().data(), forces.size());
 }
 
+std::string LiggghtsDriver::findLastParticles() {
+    // Still in the remembered order? (Nothing ran since getParticles, unless a
+    // command deleted or created atoms.) Otherwise match by tag.
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    const int nlocal = atom.nlocal;
+    lastIndex_.clear();
+    bool sameOrder = nlocal == static_cast<int>(lastTags_.size());
+    for (int i = 0; sameOrder && i < nlocal; ++i) sameOrder = atom.tag[i] == lastTags_[i];
+    if (sameOrder) return {};
+    std::unordered_map<int, int> local;
+    local.reserve(nlocal);
+    for (int i = 0; i < nlocal; ++i) local.emplace(atom.tag[i], i);
+    lastIndex_.resize(lastTags_.size());
+    for (std::size_t k = 0; k < lastTags_.size(); ++k) {
+        auto it = local.find(lastTags_[k]);
+        if (it == local.end()) {
+            std::ostringstream problem;
+            problem << "setFluidForces: particle " << lastTags_[k]
+                    << " of the last getParticles() call is no longer on this rank "
+                       "(deleted, or LIGGGHTS ran in between); call getParticles() again";
+            return problem.str();
+        }
+        lastIndex_[k] = it->second;
+    }
+    return {};
+}
+
 void LiggghtsDriver::setFluidForces(const double* xyz, std::size_t n) {
     const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>> forces(xyz, 3, static_cast<Eigen::Index>(n));
     if (!forces_) fail<Error>("LiggghtsDriver::setFluidForces called before enableFluidForces()");
-    const LAMMPS_NS::Atom& atom = *lmp_->atom;
-    const int nlocal = atom.nlocal;
     std::ostringstream problem;
     problem.precision(10);
     if (n != lastTags_.size())
@@ -185,46 +210,73 @@ void LiggghtsDriver::setFluidForces(const double* xyz, std::size_t n) {
         if (!forces.col(k).allFinite())
             problem << "setFluidForces: fluid force on particle " << lastTags_[k] << " is ("
                     << forces.col(k).transpose() << ") N, expected finite values";
-
-    // Still in the remembered order? (Nothing ran since getParticles, unless a
-    // command deleted or created atoms.) Otherwise match by tag.
-    bool sameOrder = problem.tellp() == 0 && nlocal == static_cast<int>(lastTags_.size());
-    for (int i = 0; sameOrder && i < nlocal; ++i) sameOrder = atom.tag[i] == lastTags_[i];
-    std::vector<int> index(lastTags_.size());
-    if (problem.tellp() == 0) {
-        if (sameOrder) {
-            for (int i = 0; i < nlocal; ++i) index[i] = i;
-        } else {
-            std::unordered_map<int, int> local;
-            local.reserve(nlocal);
-            for (int i = 0; i < nlocal; ++i) local.emplace(atom.tag[i], i);
-            for (std::size_t k = 0; problem.tellp() == 0 && k < lastTags_.size(); ++k) {
-                auto it = local.find(lastTags_[k]);
-                if (it == local.end())
-                    problem << "setFluidForces: particle " << lastTags_[k]
-                            << " of the last getParticles() call is no longer on this rank "
-                               "(deleted, or LIGGGHTS ran in between); call getParticles() again";
-                else
-                    index[k] = it->second;
-            }
-        }
-    }
+    if (problem.tellp() == 0) problem << findLastParticles();
     raiseIfAny(comm_, problem.str());
+    for (std::size_t k = 0; k < n; ++k) storeForce(localIndex(k), xyz + 3 * k);
+}
 
+void LiggghtsDriver::storeForce(int i, const double* f) {
     // `run N pre no` does not recompute forces before its first half-kick:
     // it uses atom->f as the last step left it, which holds the *old* fluid
     // force. Patch f by the change so the new force acts from the first
     // half-step, exactly as a full setup would give (the other forces are
     // unchanged since nothing moved). A full setup recomputes f anyway, and
     // before the first run f holds nothing yet.
-    double** f = atom.f;
-    for (std::size_t k = 0; k < n; ++k) {
-        const int i = index[k];
-        double* stored = forces_->force(i);
-        for (int d = 0; d < 3; ++d) {
-            if (!needsSetup_) f[i][d] += forces(d, k) - stored[d];
-            stored[d] = forces(d, k);
+    double* fi = lmp_->atom->f[i];
+    double* stored = forces_->force(i);
+    for (int d = 0; d < 3; ++d) {
+        if (!needsSetup_) fi[d] += f[d] - stored[d];
+        stored[d] = f[d];
+    }
+}
+
+void LiggghtsDriver::beginFluidForces() {
+    if (!forces_) fail<Error>("LiggghtsDriver::beginFluidForces called before enableFluidForces()");
+    // Not collective: a particle that is gone is raised by endFluidForces()
+    // (one reduction per coupling step), and nothing is stored until then.
+    forcesSet_ = 0;
+    forceProblem_ = findLastParticles();
+}
+
+void LiggghtsDriver::setFluidForce(std::size_t k, const double* f) {
+    ++forcesSet_;
+    if (k >= lastTags_.size() || !(std::isfinite(f[0]) && std::isfinite(f[1]) && std::isfinite(f[2])) ||
+        !forceProblem_.empty()) {
+        if (forceProblem_.empty()) {
+            std::ostringstream problem;
+            problem.precision(10);
+            if (k >= lastTags_.size())
+                problem << "setFluidForce: particle index " << k << " given for the "
+                        << lastTags_.size() << " particles of the last getParticles() call on this rank";
+            else
+                problem << "setFluidForces: fluid force on particle " << lastTags_[k] << " is (" << f[0] << ' '
+                        << f[1] << ' ' << f[2] << ") N, expected finite values";
+            forceProblem_ = problem.str();
         }
+        return;
+    }
+    storeForce(localIndex(k), f);
+}
+
+void LiggghtsDriver::endFluidForces() {
+    if (forceProblem_.empty() && forcesSet_ != lastTags_.size()) {
+        std::ostringstream problem;
+        problem << "setFluidForces: " << forcesSet_ << " forces given for " << lastTags_.size()
+                << " particles of the last getParticles() call on this rank";
+        forceProblem_ = problem.str();
+    }
+    std::string problem;
+    std::swap(problem, forceProblem_);
+    raiseIfAny(comm_, problem);
+}
+
+void LiggghtsDriver::getFluidForces(std::vector<double>& xyz) {
+    if (!forces_) fail<Error>("LiggghtsDriver::getFluidForces called before enableFluidForces()");
+    raiseIfAny(comm_, findLastParticles());
+    xyz.resize(3 * lastTags_.size());
+    for (std::size_t k = 0; k < lastTags_.size(); ++k) {
+        const double* stored = forces_->force(localIndex(k));
+        std::copy_n(stored, 3, xyz.data() + 3 * k);
     }
 }
 

@@ -76,6 +76,24 @@ public:
     // The same with the forces as n x 3 contiguous doubles (x y z per particle).
     void setFluidForces(const double* xyz, std::size_t n);
 
+    // The same one particle at a time, with no array of all forces in
+    // between (the coupled run writes each force as the exchange brings it):
+    // beginFluidForces() finds the particles of the last getParticles() (by
+    // tag if LIGGGHTS reordered them), setFluidForce(k, f) gives particle k of
+    // that list the force f[0..2] exactly as setFluidForces does,
+    // endFluidForces() raises the first problem as InputError on all ranks
+    // together (collective, the only reduction): a particle of the list is
+    // gone (then no force is stored), a force was not finite (it is not
+    // stored, the others are), or not every particle of the list was given
+    // (counted).
+    void beginFluidForces();
+    void setFluidForce(std::size_t k, const double* f);
+    void endFluidForces();
+    // The stored fluid force of each particle of the last getParticles() (3
+    // doubles each, in that order), for output; InputError as
+    // beginFluidForces() if one is gone. Collective.
+    void getFluidForces(std::vector<double>& xyz);
+
     // Advances the DEM by nSteps steps: a full LIGGGHTS setup (`run N`) the
     // first time and after any command(), `run N pre no post no` otherwise.
     // Collective.
@@ -117,6 +135,8 @@ public:
 
 private:
     void checkLogDir() const;
+    // Stores force f of local particle i and patches atom->f by its change.
+    void storeForce(int i, const double* f);
 
     MPI_Comm comm_ = MPI_COMM_NULL;  // our duplicate of the caller's comm
     int rank_ = 0;
@@ -129,6 +149,15 @@ private:
     double alignedTime_ = 0;  // time [s] at step alignedStep_
     std::int64_t alignedStep_ = 0;
     std::vector<int> lastTags_;  // tags in the order of the last getParticles
+    // LIGGGHTS' local index of each particle of lastTags_ (empty: the same
+    // order, no reordering since getParticles), from findLastParticles().
+    std::vector<int> lastIndex_;
+    // Between beginFluidForces() and endFluidForces(): forces set, first problem.
+    std::size_t forcesSet_ = 0;
+    std::string forceProblem_;
+    // Fills lastIndex_ (or clears it: same order); the problem, if any.
+    std::string findLastParticles();
+    int localIndex(std::size_t k) const { return lastIndex_.empty() ? static_cast<int>(k) : lastIndex_[k]; }
 };
 
 }  // namespace granair::dem

@@ -27,28 +27,16 @@ void CouplingStep::voidFraction(const OwnedParticles& owned, double* eps) {
     const std::size_t np = owned.size();
 
     // Stencils and solid volume.
-    offset_.clear();
-    stencilCell_.clear();
-    stencilWeight_.clear();
-    solid_.assign(nCells, 0.0);
     if (centreOnly_) {
+        offset_.clear();
+        solid_.assign(nCells, 0.0);
         for (std::size_t p = 0; p < np; ++p) solid_[owned.cell(p)] += 1.0 * volume(owned.state(p));
-    } else {
-        reserveAtLeast(offset_, np + 1);
-        offset_.push_back(0);
-        for (std::size_t p = 0; p < np; ++p) {
-            const ParticleState& ps = owned.state(p);
-            const double vp = volume(ps);
-            settings_.voidFraction->stencil(mesh_, ps, owned.cell(p), scratch_);
-            if (stencilCell_.size() + scratch_.size() > std::numeric_limits<std::uint32_t>::max())
-                fail("CouplingStep: more than 2^32 stencil entries on one rank (", np, " particles)");
-            for (const CellWeight& cw : scratch_) {
-                solid_[cw.cell] += cw.weight * vp;
-                stencilCell_.push_back(cw.cell);
-                stencilWeight_.push_back(cw.weight);
-            }
-            offset_.push_back(static_cast<std::uint32_t>(stencilCell_.size()));
-        }
+    } else if (!buildStencils(owned)) {
+        // A stencil spans more than 16 bits of cell numbers: plain indices
+        // from now on on this rank (the step's stencils built again).
+        wideCells_ = true;
+        std::vector<std::int16_t>().swap(stencilDelta_);
+        buildStencils(owned);
     }
 
     // Void fraction with its floor.
@@ -110,6 +98,75 @@ void CouplingStep::particlesToCells(const OwnedParticles& owned, const double* U
     }
 }
 
+bool CouplingStep::buildStencils(const OwnedParticles& owned) {
+    const std::size_t np = owned.size();
+    offset_.clear();
+    stencilDelta_.clear();
+    stencilCell_.clear();
+    stencilWeight_.clear();
+    if (np > 0 && stencilWeight_.capacity() == 0) {
+        // The first step (usually the most particles a run has): the
+        // stencils counted first, so the arrays are sized exactly (one extra
+        // stencil evaluation per particle, once per run).
+        std::size_t total = 0;
+        for (std::size_t p = 0; p < np; ++p) {
+            settings_.voidFraction->stencil(mesh_, owned.state(p), owned.cell(p), scratch_);
+            total += scratch_.size();
+        }
+        stencilWeight_.reserve(total);
+        if (wideCells_)
+            stencilCell_.reserve(total - np);  // total >= np: every stencil has its centre
+        else
+            stencilDelta_.reserve(total - np);
+    } else if (wideCells_ && stencilCell_.capacity() == 0 && np > 0) {
+        // Just switched to plain cell indices: as many as the weights.
+        stencilCell_.reserve(stencilWeight_.capacity() > np ? stencilWeight_.capacity() - np : 0);
+    }
+    solid_.assign(mesh_.nCells(), 0.0);
+    reserveAtLeast(offset_, np + 1);
+    offset_.push_back(0);
+    constexpr int maxDelta = std::numeric_limits<std::int16_t>::max();
+    for (std::size_t p = 0; p < np; ++p) {
+        const ParticleState& ps = owned.state(p);
+        const double vp = volume(ps);
+        const int centre = owned.cell(p);
+        settings_.voidFraction->stencil(mesh_, ps, centre, scratch_);
+        if (scratch_.empty() || scratch_.front().cell != centre)
+            fail("CouplingStep: the ", settings_.voidFraction->name(), " stencil of particle ", ps.id,
+                 " does not start with its centre cell ", centre);
+        if (stencilWeight_.size() + scratch_.size() > std::numeric_limits<std::uint32_t>::max())
+            fail("CouplingStep: more than 2^32 stencil entries on one rank (", np, " particles)");
+        // Beyond the first step's size grown by an eighth, not doubled
+        // (CapacityBytes.hpp): the largest per-particle buffers.
+        const std::size_t others = stencilWeight_.size() - p + scratch_.size() - 1;
+        reserveGrowing(stencilWeight_, stencilWeight_.size() + scratch_.size());
+        if (wideCells_)
+            reserveGrowing(stencilCell_, others);
+        else
+            reserveGrowing(stencilDelta_, others);
+        solid_[centre] += scratch_.front().weight * vp;
+        stencilWeight_.push_back(scratch_.front().weight);
+        const CellWeight* const end = scratch_.data() + scratch_.size();
+        if (wideCells_) {
+            for (const CellWeight* cw = scratch_.data() + 1; cw != end; ++cw) {
+                solid_[cw->cell] += cw->weight * vp;
+                stencilCell_.push_back(cw->cell);
+                stencilWeight_.push_back(cw->weight);
+            }
+        } else {
+            for (const CellWeight* cw = scratch_.data() + 1; cw != end; ++cw) {
+                const int d = cw->cell - centre;
+                if (d < -maxDelta || d > maxDelta) return false;  // solid_ is rebuilt then
+                solid_[cw->cell] += cw->weight * vp;
+                stencilDelta_.push_back(static_cast<std::int16_t>(d));
+                stencilWeight_.push_back(cw->weight);
+            }
+        }
+        offset_.push_back(static_cast<std::uint32_t>(stencilWeight_.size()));
+    }
+    return true;
+}
+
 CouplingStep::Forces CouplingStep::forces(const OwnedParticles& owned, const double* Ucell,
                                           const double* gradPcell) const {
     if (owned.size() != beta_.size())
@@ -148,7 +205,8 @@ void CouplingStep::cellsToParticles(const OwnedParticles& owned, const double* U
 }
 
 std::size_t CouplingStep::particleBufferBytes() const {
-    return capacityBytes(offset_) + capacityBytes(stencilCell_) + capacityBytes(stencilWeight_) +
+    return capacityBytes(offset_) + capacityBytes(stencilDelta_) + capacityBytes(stencilCell_) +
+           capacityBytes(stencilWeight_) +
            capacityBytes(beta_) + capacityBytes(scratch_);
 }
 

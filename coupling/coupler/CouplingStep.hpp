@@ -88,27 +88,53 @@ public:
     // water mark): per-particle ones and per-cell ones, for the memory report.
     std::size_t particleBufferBytes() const;
     std::size_t cellBufferBytes() const;
+    // The stencils' cells are kept as plain indices (a stencil on this rank
+    // spanned more than 16 bits of cell numbers; see the members below).
+    bool wideStencilCells() const { return wideCells_; }
 
 private:
     const CouplingSettings& settings_;
     const CellLocator& mesh_;
     FluidProperties fluid_;
-    // Stencils of the particles of the last step, CSR layout in two arrays
-    // (an array of CellWeight would pad each 12-byte pair to 16). None for a
-    // model whose stencil is always the centre cell alone (`centre`): there
-    // the cell is owned.cell(p) and the weight 1.
+    // Stencils of the particles of the last step, CSR layout (an array of
+    // CellWeight would pad each 12-byte pair to 16): particle p's weights are
+    // stencilWeight_[offset_[p] .. offset_[p+1]), the first one the centre
+    // cell's (owned.cell(p), the models' contract: no cell stored for it).
+    // The cells of the others, entry k > offset_[p] (one centre entry omitted
+    // per particle before it: index k - p - 1), as their difference from the
+    // centre cell in 16 bits (stencilDelta_; the cells of a stencil are
+    // close in a mesh's numbering, OpenFOAM's renumberMesh keeps them so), or,
+    // from the first stencil on this rank with a difference beyond 16 bits
+    // on, as plain cell indices (stencilCell_, wideCells_). Memory: 8 bytes
+    // per stencil entry and 2 (or 4) per entry beyond the centre, instead of
+    // 12 per entry: the largest per-particle buffers of a smoothing model.
+    // None for a model whose stencil is always the centre cell alone
+    // (`centre`): weight 1 there.
     bool centreOnly_;
+    bool wideCells_ = false;
     std::vector<std::uint32_t> offset_;
+    std::vector<std::int16_t> stencilDelta_;
     std::vector<int> stencilCell_;
     std::vector<double> stencilWeight_;
+    // Stencils of `owned` into the arrays above and their solid volume into
+    // solid_ (zeroed first); false if a cell difference does not fit 16 bits
+    // (wideCells_ off): call again with wideCells_ on.
+    bool buildStencils(const OwnedParticles& owned);
     // Calls f(cell, weight) for each stencil entry of owned particle p.
     template <class F>
     void forEachWeight(const OwnedParticles& owned, std::size_t p, F&& f) const {
+        const int centre = owned.cell(p);
         if (centreOnly_) {
-            f(owned.cell(p), 1.0);
+            f(centre, 1.0);
             return;
         }
-        for (std::uint32_t k = offset_[p]; k < offset_[p + 1]; ++k) f(stencilCell_[k], stencilWeight_[k]);
+        const std::size_t first = offset_[p], end = offset_[p + 1];
+        f(centre, stencilWeight_[first]);
+        // offset_[p] >= p (every stencil has its centre entry): k - p - 1 >= 0.
+        if (wideCells_)
+            for (std::size_t k = first + 1; k < end; ++k) f(stencilCell_[k - p - 1], stencilWeight_[k]);
+        else
+            for (std::size_t k = first + 1; k < end; ++k) f(centre + stencilDelta_[k - p - 1], stencilWeight_[k]);
     }
     std::vector<double> beta_;     // per particle [kg/s]
     std::vector<double> solid_;    // per cell, workspace

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "core/Collective.hpp"
 #include "core/CapacityBytes.hpp"
@@ -95,10 +96,21 @@ struct ParticleExchange::Impl {
     std::vector<Outbox> outboxes;  // the first nOutboxes are in use (reused storage)
     int nOutboxes = 0;
     std::vector<int> outboxOfRank;  // rank -> outbox or -1 (O(nRanks), like the bounds)
-    // Records this rank is itself a candidate for: dem indices (never sent).
+    // Records this rank is itself a candidate for (never sent): nSelf of
+    // them, the dem index of record j is selfDem[j], or j itself while
+    // selfIdentity (every particle so far has one: no list is kept then, the
+    // usual case on 1 rank), its cell selfCell[j]. After buildRoutes() they are
+    // the ones this rank owns (the others dropped), and the owned list reads
+    // them from here (OwnedParticles::setSelf).
     std::vector<int> selfDem, selfCell;
+    bool selfIdentity = true;
+    std::size_t nSelf = 0;
+    int selfDemAt(std::size_t j) const { return selfIdentity ? static_cast<int>(j) : selfDem[j]; }
     TagCellHints selfHints;  // each own particle's cell of the last forward(), by tag
-    std::vector<char> selfMulti, selfKeep;
+    // Self records with several candidates: their positions j (ascending),
+    // and the keep decision of each.
+    std::vector<int> selfMultiPos;
+    std::vector<char> selfKeep;
     // Particles with several candidates, and their candidates in rank order.
     struct Candidate {
         int rank;
@@ -140,9 +152,12 @@ struct ParticleExchange::Impl {
     std::size_t nDem = 0, nOwned = 0;
     std::vector<double> values;      // backward(): received values
     std::vector<double> sendValues;  // backward(): values of the remote owned particles, by route
-    // Between backwardFill() and backwardSend(): the output, width and this
-    // rank's verdict.
+    // Between backwardFill() and backwardSend(): the output (an array or a
+    // sink), width and this rank's verdict.
+    bool backwardPending = false;
     std::vector<double>* backwardOut = nullptr;
+    ValueSink backwardSink;
+    std::vector<double> sinkScratch;  // one particle's values on their way to the sink
     int backwardWidth = 0;
     std::string backwardProblem;
     std::vector<MPI_Request> requests;
@@ -162,7 +177,28 @@ struct ParticleExchange::Impl {
         return b;
     }
 
-    bool selfOwns(std::size_t j) const { return selfMulti[j] ? selfKeep[j] != 0 : selfCell[j] >= 0; }
+    // Self record for dem index i (of n): kept as a list from the first one
+    // that breaks the identity on.
+    void addSelf(int i, std::size_t n) {
+        if (selfIdentity) {
+            if (static_cast<std::size_t>(i) == nSelf) {
+                ++nSelf;
+                return;
+            }
+            materializeSelf(n);
+        }
+        selfDem.push_back(i);
+        ++nSelf;
+    }
+    void materializeSelf(std::size_t n) {
+        if (!selfIdentity) return;
+        reserveAtLeast(selfDem, n);  // at most one self record per particle: not grown by doubling
+        selfDem.resize(nSelf);
+        for (std::size_t j = 0; j < nSelf; ++j) selfDem[j] = static_cast<int>(j);
+        selfIdentity = false;
+    }
+    // Keeps only the self records this rank owns (buildRoutes()).
+    void dropUnownedSelf(std::size_t nDem);
 
     // The phases of forward(), in order (see ParticleExchange.hpp).
     void findCandidates(const std::vector<ParticleState>& dem, ExchangeStats& stats, ForwardProblems& pr);
@@ -181,14 +217,12 @@ void ParticleExchange::Impl::findCandidates(const std::vector<ParticleState>& de
     for (int b = 0; b < nOutboxes; ++b) outboxOfRank[outboxes[b].rank] = -1;
     nOutboxes = 0;
     selfDem.clear();
+    selfIdentity = true;
+    nSelf = 0;
     // selfCell keeps the last step's cells: locate() hands them to selfHints.
-    selfMulti.clear();
+    selfMultiPos.clear();
     multis.clear();
     multiCandidates.clear();
-    // At most one self record per particle: reserved to the list's size, not
-    // grown by doubling (the memory report counts capacities).
-    reserveAtLeast(selfDem, dem.size());
-    reserveAtLeast(selfMulti, dem.size());
     for (int i = 0; i < static_cast<int>(dem.size()); ++i) {
         const ParticleState& p = dem[i];
         if (!p.x.allFinite()) {
@@ -218,9 +252,11 @@ void ParticleExchange::Impl::findCandidates(const std::vector<ParticleState>& de
         for (int r : candidates) {
             ++stats.particlesSent;
             if (r == rank) {
-                if (multi) multiCandidates.push_back({r, -1, static_cast<int>(selfDem.size())});
-                selfDem.push_back(i);
-                selfMulti.push_back(multi);
+                if (multi) {
+                    multiCandidates.push_back({r, -1, static_cast<int>(selfMultiPos.size())});
+                    selfMultiPos.push_back(static_cast<int>(nSelf));
+                }
+                addSelf(i, dem.size());
                 continue;
             }
             const int b = outboxFor(r);
@@ -263,9 +299,11 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<P
     // Hints only choose where to look first; a wrong one never gives a wrong cell.
     int hint = -1;
     selfHints.beginStep(selfCell);
-    selfCell.resize(selfDem.size());
-    for (std::size_t j = 0; j < selfDem.size(); ++j) {
-        const ParticleState& p = dem[selfDem[j]];
+    reserveAtLeast(selfCell, nSelf);
+    selfCell.resize(nSelf);
+    std::size_t mi = 0;
+    for (std::size_t j = 0; j < nSelf; ++j) {
+        const ParticleState& p = dem[static_cast<std::size_t>(selfDemAt(j))];
         int cell = mesh.findCellNear(p.x, selfHints.lastCell(j, p.id));
         if (cell < 0) {
             ++stats.hintMisses;
@@ -277,13 +315,15 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<P
         }
         selfCell[j] = cell;
         if (cell >= 0) hint = cell;
-        if (cell < 0 && !selfMulti[j])
+        const bool isMulti = mi < selfMultiPos.size() && selfMultiPos[mi] == static_cast<int>(j);
+        mi += isMulti;
+        if (cell < 0 && !isMulti)
             pr.outsideMesh("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank,
                            "'s CFD box but in none of its cells)");
     }
     stats.reordered = selfHints.sortedLookups();
     stats.tagSearches = selfHints.tagSearches();
-    selfHints.endStep(selfDem.size(), [&](std::size_t j) { return dem[selfDem[j]].id; });
+    // selfHints.endStep(): in buildRoutes(), for the self records kept.
     nInbound = static_cast<int>(inbox.messages.size());
     if (static_cast<int>(inbound.size()) < nInbound) inbound.resize(nInbound);
     cells.clear();
@@ -349,12 +389,13 @@ void ParticleExchange::Impl::replyFound(ExchangeStats& stats) {
 // ---- 5. owner of each multi particle: the lowest rank that found it ----
 void ParticleExchange::Impl::chooseOwners(const std::vector<ParticleState>& dem, ForwardProblems& pr) {
     for (int b = 0; b < nOutboxes; ++b) outboxes[b].keep.assign(outboxes[b].multi.size(), 0);
-    selfKeep.assign(selfDem.size(), 0);
+    selfKeep.assign(selfMultiPos.size(), 0);
     for (const Multi& mp : multis) {
         int owner = -1;
         for (int c = mp.first; c < mp.first + mp.count && owner < 0; ++c) {
             const Candidate& cand = multiCandidates[c];
-            const bool found = cand.outbox < 0 ? selfCell[cand.index] >= 0 : outboxes[cand.outbox].found[cand.index];
+            const bool found = cand.outbox < 0 ? selfCell[static_cast<std::size_t>(selfMultiPos[cand.index])] >= 0
+                                               : outboxes[cand.outbox].found[cand.index];
             if (found) owner = cand.rank;  // candidates are in ascending rank order
         }
         if (owner < 0) {
@@ -413,19 +454,20 @@ void ParticleExchange::Impl::buildRoutes(const std::vector<ParticleState>& dem, 
         }
         if (routeDem.size() > first) sendRoutes.push_back({o.rank, first, routeDem.size() - first});
     }
-    // This rank's own particles need no route: backward() walks selfDem.
+    // This rank's own particles need no route: backward() walks the self
+    // records, which from here on are the ones this rank owns.
+    dropUnownedSelf(dem.size());
+    selfHints.endStep(nSelf, [&](std::size_t j) { return dem[static_cast<std::size_t>(selfDemAt(j))].id; });
 
     // The owned list, by source rank (this rank in its place): own particles
-    // by index, inbound records decoded.
+    // read from the self records, inbound records decoded.
     owned.clear();
-    owned.local_ = &dem;
-    owned.reserve(selfDem.size() + cells.size());
+    owned.reserve(cells.size());
     recvRoutes.clear();
     auto takeSelf = [&] {
         const std::size_t first = owned.size();
-        for (std::size_t j = 0; j < selfDem.size(); ++j)
-            if (selfOwns(j)) owned.addLocal(selfDem[j], selfCell[j]);
-        if (owned.size() > first) recvRoutes.push_back({rank, first, owned.size() - first});
+        owned.setSelf(&dem, selfIdentity ? nullptr : &selfDem, &selfCell, nSelf);
+        if (nSelf > 0) recvRoutes.push_back({rank, first, nSelf});
     };
     bool selfTaken = false;
     for (int n = 0; n < nInbound; ++n) {
@@ -451,37 +493,63 @@ void ParticleExchange::Impl::buildRoutes(const std::vector<ParticleState>& dem, 
     nOwned = owned.size();
 }
 
+void ParticleExchange::Impl::dropUnownedSelf(std::size_t nDem) {
+    // Owned: a multi record if this rank was chosen, any other if found.
+    std::size_t j = 0, mi = 0;
+    const auto owns = [&](std::size_t at) {
+        const bool isMulti = mi < selfMultiPos.size() && selfMultiPos[mi] == static_cast<int>(at);
+        const bool keep = isMulti ? selfKeep[mi] != 0 : selfCell[at] >= 0;
+        mi += isMulti;
+        return keep;
+    };
+    while (j < nSelf && owns(j)) ++j;
+    if (j == nSelf) return;  // all owned (the usual case): nothing to move
+    materializeSelf(nDem);
+    std::size_t n = j;
+    for (++j; j < nSelf; ++j) {
+        if (!owns(j)) continue;
+        selfDem[n] = selfDem[j];
+        selfCell[n] = selfCell[j];
+        ++n;
+    }
+    nSelf = n;
+    selfDem.resize(n);
+    selfCell.resize(n);
+}
+
 // ---------------------------------------------------------------------------
 void OwnedParticles::clear() {
     local_ = nullptr;
-    index_.clear();
-    cell_.clear();
+    selfDem_ = selfCell_ = nullptr;
+    selfBegin_ = selfCount_ = 0;
+    remoteCell_.clear();
     remote_.clear();
 }
 
 void OwnedParticles::reserve(std::size_t n) {
-    reserveAtLeast(index_, n);
-    reserveAtLeast(cell_, n);
+    reserveAtLeast(remoteCell_, n);
+    reserveAtLeast(remote_, n);
 }
 
-void OwnedParticles::addLocal(int demIndex, int cell) {
-    index_.push_back(demIndex);
-    cell_.push_back(cell);
+void OwnedParticles::setSelf(const std::vector<ParticleState>* local, const std::vector<int>* selfDem,
+                             const std::vector<int>* selfCell, std::size_t count) {
+    local_ = local;
+    selfDem_ = selfDem;
+    selfCell_ = selfCell;
+    selfBegin_ = remoteCell_.size();
+    selfCount_ = count;
 }
 
 void OwnedParticles::addRemote(const ParticleState& p, int cell) {
-    if (remote_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    if (size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
         fail("OwnedParticles: more than 2^31 particles on one rank");
-    index_.push_back(-1 - static_cast<std::int32_t>(remote_.size()));
-    cell_.push_back(cell);
+    remoteCell_.push_back(cell);
     remote_.push_back(p);
 }
 
 void OwnedParticles::add(const ParticleState& p, int cell) { addRemote(p, cell); }
 
-std::size_t OwnedParticles::bufferBytes() const {
-    return capacityBytes(index_) + capacityBytes(cell_) + capacityBytes(remote_);
-}
+std::size_t OwnedParticles::bufferBytes() const { return capacityBytes(remoteCell_) + capacityBytes(remote_); }
 
 // ---------------------------------------------------------------------------
 ParticleExchange::ParticleExchange(MPI_Comm comm, const CellLocator& mesh, double margin)
@@ -552,15 +620,21 @@ void ParticleExchange::backward(const std::vector<double>& ownedValues, int widt
               "; expected owned.size() * width";
     const std::size_t w = width >= 1 ? static_cast<std::size_t>(width) : 0;
     fillBackward(
-        width, [&](std::size_t k, double* dst) { std::copy_n(ownedValues.data() + k * w, w, dst); }, out, bad);
+        width, [&](std::size_t k, double* dst) { std::copy_n(ownedValues.data() + k * w, w, dst); }, &out, nullptr,
+        bad);
     backwardSend();
 }
 
 void ParticleExchange::backwardFill(int width, const ValueFill& fill, std::vector<double>& out) {
-    fillBackward(width, fill, out, std::string());
+    fillBackward(width, fill, &out, nullptr, std::string());
 }
 
-void ParticleExchange::fillBackward(int width, const ValueFill& fill, std::vector<double>& out, std::string bad) {
+void ParticleExchange::backwardFill(int width, const ValueFill& fill, const ValueSink& sink) {
+    fillBackward(width, fill, nullptr, &sink, std::string());
+}
+
+void ParticleExchange::fillBackward(int width, const ValueFill& fill, std::vector<double>* out,
+                                    const ValueSink* sink, std::string bad) {
     Impl& m = *impl_;
     // Checked here on this rank and collectively in backwardSend() (a rank
     // throwing alone would leave its partners waiting for its values); with
@@ -570,16 +644,19 @@ void ParticleExchange::fillBackward(int width, const ValueFill& fill, std::vecto
     } else if (width < 1) {
         bad = "ParticleExchange::backward(): width = " + std::to_string(width) + "; expected >= 1";
     }
-    m.backwardOut = &out;
+    m.backwardPending = true;
+    m.backwardOut = out;
+    m.backwardSink = sink ? *sink : ValueSink();
     m.backwardWidth = width;
     m.backwardProblem = bad;
     if (!bad.empty()) return;
 
-    // Own particles' values go straight to their dem slots (the self part of
-    // the owned list is selfDem's owned entries, in order); the others' into
-    // one send buffer, route after route.
+    // Own particles' values go straight to their dem slots or the sink (the
+    // self part of the owned list is selfDem's owned entries, in order); the
+    // others' into one send buffer, route after route.
     const std::size_t w = static_cast<std::size_t>(width);
-    out.assign(m.nDem * w, std::numeric_limits<double>::quiet_NaN());
+    if (out) out->assign(m.nDem * w, std::numeric_limits<double>::quiet_NaN());
+    m.sinkScratch.resize(sink ? w : 0);
     std::size_t remote = 0;
     for (const Impl::Route& r : m.recvRoutes)
         if (r.rank != rank_) remote += r.count * w;
@@ -588,8 +665,15 @@ void ParticleExchange::fillBackward(int width, const ValueFill& fill, std::vecto
     for (const Impl::Route& r : m.recvRoutes) {
         if (r.rank == rank_) {
             std::size_t k = r.first;
-            for (std::size_t j = 0; j < m.selfDem.size(); ++j)
-                if (m.selfOwns(j)) fill(k++, out.data() + static_cast<std::size_t>(m.selfDem[j]) * w);
+            for (std::size_t j = 0; j < m.nSelf; ++j) {
+                const std::size_t i = static_cast<std::size_t>(m.selfDemAt(j));
+                if (out) {
+                    fill(k++, out->data() + i * w);
+                } else {
+                    fill(k++, m.sinkScratch.data());
+                    (*sink)(i, m.sinkScratch.data());
+                }
+            }
             continue;
         }
         for (std::size_t k = 0; k < r.count; ++k) fill(r.first + k, m.sendValues.data() + at + k * w);
@@ -599,9 +683,12 @@ void ParticleExchange::fillBackward(int width, const ValueFill& fill, std::vecto
 
 void ParticleExchange::backwardSend() {
     Impl& m = *impl_;
-    if (!m.backwardOut) fail("ParticleExchange::backwardSend() without backwardFill()");
-    std::vector<double>& out = *m.backwardOut;
+    if (!m.backwardPending) fail("ParticleExchange::backwardSend() without backwardFill()");
+    m.backwardPending = false;
+    std::vector<double>* out = m.backwardOut;
     m.backwardOut = nullptr;
+    const ValueSink sink = std::move(m.backwardSink);
+    m.backwardSink = ValueSink();
     const int width = m.backwardWidth;
     // One allreduce carries the local verdicts and the width range (a width
     // mismatch would garble every message).
@@ -641,9 +728,13 @@ void ParticleExchange::backwardSend() {
 
     at = 0;
     for (const Impl::Route& r : m.sendRoutes) {
-        for (std::size_t k = 0; k < r.count; ++k)
-            for (std::size_t j = 0; j < w; ++j)
-                out[m.routeDem[r.first + k] * w + j] = m.values[at + k * w + j];
+        for (std::size_t k = 0; k < r.count; ++k) {
+            const std::size_t i = static_cast<std::size_t>(m.routeDem[r.first + k]);
+            if (out)
+                std::copy_n(m.values.data() + at + k * w, w, out->data() + i * w);
+            else
+                sink(i, m.values.data() + at + k * w);
+        }
         at += r.count * w;
     }
 }
@@ -651,7 +742,7 @@ void ParticleExchange::backwardSend() {
 std::size_t ParticleExchange::bufferBytes() const {
     const Impl& m = *impl_;
     std::size_t n = capacityBytes(m.candidates) + capacityBytes(m.outboxes) + capacityBytes(m.outboxOfRank) +
-                    capacityBytes(m.selfDem) + capacityBytes(m.selfCell) + capacityBytes(m.selfMulti) +
+                    capacityBytes(m.selfDem) + capacityBytes(m.selfCell) + capacityBytes(m.selfMultiPos) +
                     capacityBytes(m.selfKeep) + capacityBytes(m.multis) + capacityBytes(m.multiCandidates) +
                     capacityBytes(m.inbox.bytes) + capacityBytes(m.inbox.messages) +
                     capacityBytes(m.inbound) + capacityBytes(m.cells) + capacityBytes(m.sendRoutes) +

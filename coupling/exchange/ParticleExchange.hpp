@@ -53,19 +53,27 @@ struct OwnedParticle {
 
 // The particles whose cells this rank owns, as forward() leaves them. This
 // rank's own DEM particles are referred to by their index in the `dem` list
-// given to forward(), never copied: that list must stay alive and unchanged
-// while the owned list is used (until the next forward()). Records from
-// other ranks are decoded once into a list of their own. add() appends a
-// copy (for callers that build a list directly, e.g. tests).
+// given to forward(), never copied, and so are their cells: the list reads
+// both from the exchange's own per-particle lists (ParticleExchange.cpp
+// `selfDem`, `selfCell`), with no copy of its own. The `dem` list and the
+// exchange must stay alive and unchanged while the owned list is used (until
+// the next forward()). Records from other ranks are decoded once into a list
+// of their own. add() appends a copy (for callers that build a list
+// directly, e.g. tests).
 class OwnedParticles {
 public:
-    std::size_t size() const { return cell_.size(); }
-    bool empty() const { return cell_.empty(); }
+    std::size_t size() const { return selfCount_ + remoteCell_.size(); }
+    bool empty() const { return size() == 0; }
     const ParticleState& state(std::size_t k) const {
-        const std::int32_t i = index_[k];
-        return i >= 0 ? (*local_)[static_cast<std::size_t>(i)] : remote_[static_cast<std::size_t>(-1 - i)];
+        const std::size_t s = k - selfBegin_;  // wraps around for k < selfBegin_
+        if (s < selfCount_) return (*local_)[selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s];
+        return remote_[k < selfBegin_ ? k : k - selfCount_];
     }
-    int cell(std::size_t k) const { return cell_[k]; }
+    int cell(std::size_t k) const {
+        const std::size_t s = k - selfBegin_;
+        if (s < selfCount_) return (*selfCell_)[s];
+        return remoteCell_[k < selfBegin_ ? k : k - selfCount_];
+    }
     OwnedParticle operator[](std::size_t k) const { return {state(k), cell(k)}; }
 
     // Iteration yields copies (OwnedParticle values), for tests and checks;
@@ -88,18 +96,24 @@ public:
     const_iterator end() const { return {this, size()}; }
 
     void clear();
-    void reserve(std::size_t n);  // room for n particles (exactly, not by doubling)
+    void reserve(std::size_t n);  // room for n remote particles (exactly, not by doubling)
     void add(const ParticleState& p, int cell);
-    std::size_t bufferBytes() const;
+    std::size_t bufferBytes() const;  // its own lists (the remote particles)
 
 private:
     friend class ParticleExchange;
-    void addLocal(int demIndex, int cell);
     void addRemote(const ParticleState& p, int cell);
+    // The own particles: owned[selfBegin_ .. selfBegin_ + selfCount_) are
+    // (*local_)[(*selfDem_)[s]] (selfDem_ null: [s]) in cell (*selfCell_)[s];
+    // the remote ones the others, in order.
+    void setSelf(const std::vector<ParticleState>* local, const std::vector<int>* selfDem,
+                 const std::vector<int>* selfCell, std::size_t count);
 
     const std::vector<ParticleState>* local_ = nullptr;  // the dem list of the last forward()
-    std::vector<std::int32_t> index_;  // >= 0: into *local_; < 0: -1 - index into remote_
-    std::vector<int> cell_;
+    const std::vector<int>* selfDem_ = nullptr;
+    const std::vector<int>* selfCell_ = nullptr;
+    std::size_t selfBegin_ = 0, selfCount_ = 0;
+    std::vector<int> remoteCell_;
     std::vector<ParticleState> remote_;
 };
 
@@ -169,6 +183,13 @@ public:
     using ValueFill = std::function<void(std::size_t k, double* dst)>;
     void backwardFill(int width, const ValueFill& fill, std::vector<double>& out);
     void backwardSend();
+    // backwardFill() with no array for the output either: sink(i, v) gets the
+    // `width` values v of dem particle i of the last forward(), once for each
+    // dem particle some rank owns (this rank's own during backwardFill(), the
+    // others' in backwardSend(); a particle no rank owns, Outside::skip, gets
+    // no call). The coupled run puts each force straight into LIGGGHTS.
+    using ValueSink = std::function<void(std::size_t demIndex, const double* v)>;
+    void backwardFill(int width, const ValueFill& fill, const ValueSink& sink);
 
     const ExchangeStats& stats() const { return stats_; }
     // Bytes held by the exchange's buffers on this rank (vector capacities,
@@ -181,7 +202,9 @@ private:
     // Buffers and routes of the last forward(), and the phases of forward()
     // as its member functions; defined in ParticleExchange.cpp.
     struct Impl;
-    void fillBackward(int width, const ValueFill& fill, std::vector<double>& out, std::string problem);
+    // Exactly one of out and sink is given.
+    void fillBackward(int width, const ValueFill& fill, std::vector<double>* out, const ValueSink* sink,
+                      std::string problem);
     MPI_Comm comm_;
     const CellLocator& mesh_;
     double margin_;

@@ -38,15 +38,14 @@ void GaussianVoidFraction::stencil(const CellLocator& mesh, const ParticleState&
     };
 
     // Pass 1, breadth-first search: collect cells and their squared distance
-    // (kept in out[].weight for now).
+    // (kept in out[].weight for now). `out` is the search's queue too (every
+    // cell used is expanded, in the order it was found).
     out.clear();
-    queue_.clear();
     stamp_[static_cast<std::size_t>(centreCell)] = generation_;
     double d2min = squaredDistance(centreCell);
     out.push_back({centreCell, d2min});
-    queue_.push_back(centreCell);
-    for (std::size_t head = 0; head < queue_.size(); ++head) {
-        const int c = queue_[head];
+    for (std::size_t head = 0; head < out.size(); ++head) {
+        const int c = out[head].cell;  // a copy: push_back below may move out
         for (int k = a.neighbourStart[c]; k < a.neighbourStart[c + 1]; ++k) {
             const int nb = a.neighbours[k];
             std::uint32_t& s = stamp_[static_cast<std::size_t>(nb)];
@@ -55,7 +54,6 @@ void GaussianVoidFraction::stencil(const CellLocator& mesh, const ParticleState&
             const double d2 = squaredDistance(nb);
             if (d2 > rc2) continue;  // beyond the cutoff: not used, not expanded
             out.push_back({nb, d2});
-            queue_.push_back(nb);
             d2min = std::min(d2min, d2);
         }
     }

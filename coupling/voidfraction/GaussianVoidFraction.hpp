@@ -88,11 +88,10 @@ public:
 private:
     double width_, cutoff_;
     // Breadth-first search workspace, reused across particles: a visit stamp
-    // per cell (stamp_[c] == generation_ means visited for this particle), the
-    // queue, and a neighbour list.
+    // per cell (stamp_[c] == generation_ means visited for this particle; the
+    // stencil being built is the queue).
     mutable std::vector<std::uint32_t> stamp_;
     mutable std::uint32_t generation_ = 0;
-    mutable std::vector<int> queue_, neighbours_;
 };
 
 }  // namespace granair

@@ -29,7 +29,9 @@ public:
     virtual std::string name() const = 0;
 
     // Append the stencil of particle p (inside local cell `centreCell`) to out
-    // (out is cleared first). Weights are >= 0 and sum to 1 to round-off.
+    // (out is cleared first). Weights are >= 0 and sum to 1 to round-off. The
+    // first entry is centreCell (the coupling step stores no cell index for
+    // it: coupler/CouplingStep.hpp), no cell appears twice.
     virtual void stencil(const CellLocator& mesh, const ParticleState& p, int centreCell,
                          std::vector<CellWeight>& out) const = 0;
 

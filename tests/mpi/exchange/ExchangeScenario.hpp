@@ -196,6 +196,20 @@ inline int backwardMismatches(granair::ParticleExchange& ex, const granair::Owne
         for (int a = 0; a < 3; ++a) wrong += out[i * width + 1 + a] != dem[i].x[a];
         wrong += out[i * width + 4] != lowestFinder(meshes, dem[i].x);
     }
+    // The same values through a sink (backwardFill with no output array, as
+    // the coupled run hands forces to LIGGGHTS): each dem particle once, the
+    // same numbers bit for bit.
+    std::vector<double> sunk(out.size(), 0.0);
+    std::vector<int> calls(dem.size(), 0);
+    ex.backwardFill(
+        width, [&](std::size_t k, double* dst) { std::copy_n(values.data() + k * width, width, dst); },
+        [&](std::size_t i, const double* v) {
+            ++calls[i];
+            std::copy_n(v, width, sunk.data() + i * width);
+        });
+    ex.backwardSend();
+    for (std::size_t i = 0; i < dem.size(); ++i) wrong += calls[i] != 1;
+    for (std::size_t j = 0; j < out.size(); ++j) wrong += sunk[j] != out[j];
     return wrong;
 }
 

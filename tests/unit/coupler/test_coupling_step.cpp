@@ -9,6 +9,7 @@
 #include <random>
 
 #include "coupler/CouplingStep.hpp"
+#include "voidfraction/GaussianVoidFraction.hpp"
 #include "mapping/BoxMesh.hpp"
 
 using namespace granair;
@@ -209,4 +210,62 @@ TEST_CASE("centre: no stored stencils, the same numbers bit for bit", "[coupler]
     std::vector<double> one(3 * parts.size());
     for (std::size_t p = 0; p < parts.size(); ++p) force(p, one.data() + 3 * p);
     CHECK(one == f[0]);
+}
+
+TEST_CASE("gaussian: stencil cells in 16 bits, or plain indices where they span more", "[coupler]") {
+    // The coupling step stores a stencil's cells as differences from the
+    // centre cell in 16 bits, and falls back to plain indices on a rank where
+    // a stencil spans more. On 200 x 200 x 3 cells the z neighbours are 40000
+    // cell numbers apart: particles in the middle layer need the fallback,
+    // particles in a 4 x 4 x 8 mesh do not. Either way eps and the
+    // pressure-gradient force are those of the model's own stencils (the same
+    // arithmetic in the same order: bit for bit).
+    struct Case {
+        BoxMesh mesh;
+        bool wide;
+    };
+    const double h = 0.002;  // cell size = the kernel width of settings()
+    Case cases[] = {{BoxMesh(Vec3(0, 0, 0), Vec3(4 * h, 4 * h, 8 * h), {4, 4, 8}), false},
+                    {BoxMesh(Vec3(0, 0, 0), Vec3(200 * h, 200 * h, 3 * h), {200, 200, 3}), true}};
+    for (const Case& c : cases) {
+        const BoxMesh& mesh = c.mesh;
+        auto cs = settings("DiFelice", "gaussian");
+        const GaussianVoidFraction model(h);
+        CouplingStep step(cs, mesh, FluidProperties{1.2, 1.8e-5});
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> u(0.3, 0.7);
+        OwnedParticles parts;
+        for (int i = 0; i < 40; ++i) {
+            const Vec3 x(u(rng) * 4 * h, u(rng) * 4 * h, 1.5 * h);
+            const ParticleState p{i + 1, x, Vec3(0, 0, -0.05), 4e-4};
+            parts.add(p, mesh.findCell(p.x));
+        }
+        const int n = mesh.nCells();
+        std::vector<double> U(3 * n, 0.0), eps(n), K(n), Us(3 * n), gradP(3 * n), zero(3 * n, 0.0), f, f0;
+        for (int k = 0; k < n; ++k) gradP[3 * k + 2] = 10.0 * k;  // a different value in every cell
+        step.particlesToCells(parts, U.data(), eps.data(), K.data(), Us.data());
+        step.cellsToParticles(parts, U.data(), gradP.data(), f);
+        step.cellsToParticles(parts, U.data(), zero.data(), f0);
+        INFO(n << " cells");
+        CHECK(step.wideStencilCells() == c.wide);
+        // The model's own stencils, summed as the coupling step sums them.
+        std::vector<double> solid(n, 0.0);
+        std::vector<CellWeight> st;
+        std::vector<double> gpz(parts.size(), 0.0);
+        for (std::size_t p = 0; p < parts.size(); ++p) {
+            const ParticleState& ps = parts.state(p);
+            const double vp = 4.0 / 3.0 * M_PI * ps.radius * ps.radius * ps.radius;
+            model.stencil(mesh, ps, parts.cell(p), st);
+            for (const CellWeight& cw : st) {
+                solid[cw.cell] += cw.weight * vp;
+                gpz[p] += cw.weight * gradP[3 * cw.cell + 2];
+            }
+            if (c.wide) REQUIRE(st.size() > 9);  // the layers above and below are in it
+            // -V_p grad(p): the force with the gradient less the force without it.
+            CHECK(f[3 * p + 2] - f0[3 * p + 2] == Approx(-vp * gpz[p]).epsilon(1e-12));
+        }
+        bool same = true;
+        for (int k = 0; k < n; ++k) same = same && eps[k] == 1.0 - solid[k] / mesh.cellVolume(k);
+        CHECK(same);
+    }
 }

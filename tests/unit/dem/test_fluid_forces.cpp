@@ -9,6 +9,8 @@
 #include <catch2/catch.hpp>
 #include <mpi.h>
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "DemTestSupport.hpp"
@@ -159,4 +161,43 @@ TEST_CASE("dem: setFluidForces matches particles by tag when LIGGGHTS reordered 
     std::vector<Vec3> f(after.size(), Vec3::Zero());
     CHECK_THAT(test::inputErrorFrom([&] { dem.setFluidForces(f); }),
                Catch::Matchers::Contains("particle 3 "));
+}
+
+TEST_CASE("dem: forces one particle at a time act as setFluidForces; problems named at the end", "[dem]") {
+    // beginFluidForces / setFluidForce / endFluidForces (what the coupled run
+    // uses, with no array of all forces): the held particles stay put as with
+    // setFluidForces, getFluidForces reads the stored forces back in the
+    // list's order, and a non-finite force or a missing one is an InputError
+    // naming it at endFluidForces().
+    LiggghtsDriver dem(MPI_COMM_WORLD, test::logDir("force_streamed"));
+    dem.runFile(test::script("discharge.liggghts"));
+    dem.enableFluidForces();
+    std::vector<ParticleState> p;
+    std::vector<double> m;
+    dem.getParticles(p);
+    dem.getParticleMasses(m);
+    REQUIRE(p.size() == 5);
+    const std::vector<Vec3> f = holdingForces(m);
+    dem.beginFluidForces();
+    for (std::size_t k = p.size(); k-- > 0;) dem.setFluidForce(k, f[k].data());  // any order
+    dem.endFluidForces();
+    std::vector<double> stored;
+    dem.getFluidForces(stored);
+    REQUIRE(stored.size() == 15);
+    for (std::size_t k = 0; k < p.size(); ++k)
+        for (int a = 0; a < 3; ++a) CHECK(stored[3 * k + a] == f[k][a]);
+    dem.advance(500);
+    std::vector<ParticleState> after;
+    dem.getParticles(after);
+    for (const ParticleState& q : after) CHECK(q.v.norm() < 1e-12);
+
+    double bad[3] = {0.0, std::nan(""), 0.0};
+    dem.beginFluidForces();
+    for (std::size_t k = 0; k < after.size(); ++k) dem.setFluidForce(k, k == 3 ? bad : f[k].data());
+    CHECK_THAT(test::inputErrorFrom([&] { dem.endFluidForces(); }),
+               Catch::Matchers::Contains("particle " + std::to_string(after[3].id) + " is"));
+    dem.beginFluidForces();
+    for (std::size_t k = 0; k + 1 < after.size(); ++k) dem.setFluidForce(k, f[k].data());
+    CHECK_THAT(test::inputErrorFrom([&] { dem.endFluidForces(); }),
+               Catch::Matchers::Contains("4 forces given for 5 particles"));
 }

@@ -95,6 +95,18 @@ TEST_CASE("exchange on one rank owns every particle in dem order, backward round
         ex.backwardSend();
         CHECK(calls == owned.size());
         CHECK(halves == out);
+        // With a sink instead of the array: every dem particle once, the same values.
+        std::vector<double> sunk(out.size(), 0.0);
+        std::vector<int> sinks(dem.size(), 0);
+        ex.backwardFill(
+            width, [&](std::size_t k, double* dst) { std::copy_n(values.data() + k * width, width, dst); },
+            [&](std::size_t i, const double* v) {
+                ++sinks[i];
+                std::copy_n(v, width, sunk.data() + i * width);
+            });
+        ex.backwardSend();
+        CHECK(sunk == out);
+        CHECK(std::count(sinks.begin(), sinks.end(), 1) == static_cast<long>(dem.size()));
     }
     CHECK_THROWS_WITH(ex.backwardSend(), Contains("without backwardFill"));
 
