@@ -3,7 +3,8 @@
 is known: Beverloo rates made with a known k at three parcel sizes (k and the rate at the
 primary size recovered exactly), two points (the extrapolation's error from the two
 Lagrange weights by hand), three points off a line by hand-computed amounts (chi2, the
-Birge ratio and the scaled error), bad input, and the standard error of a short series
+Birge ratio and the scaled error), the slot form (exponent 1.5: k, the rate and the
+two-point error), bad input, and the standard error of a short series
 with a hand-computed lag-1 autocorrelation."""
 import math
 import sys
@@ -30,6 +31,27 @@ check("W at the primary size", f["w_at"], closed_forms.beverloo_circular(D, 660e
 check("chi2 of exact rates", f["chi2"], 0.0, abs_=1e-12)
 check("dof", f["dof"], 1)
 check("exact rates: scaled error = statistical error", f["w_at_se"], f["w_at_se_stat"], 1e-12)
+
+# the slot form (exponent 1.5, Hagen-Beverloo): exact rates of a 10 mm slot, 60 mm long, k = 1.4,
+# at the parcel sizes of s = 5, 7.6, 10 (218 um primaries): k and the rate at 218 um recovered exactly
+b_slot, k_slot = 10e-3, 1.4
+d_slot = np.array([5, 7.6, 10]) * 218e-6
+w_slot = np.array([closed_forms.beverloo_slot(b_slot, x, 619.0, 0.06, k_slot) for x in d_slot])
+f = fits.beverloo_size(d_slot, w_slot, 0.01 * w_slot, b_slot, 218e-6, exponent=1.5)
+check("slot: k from exact rates", f["k"], k_slot, 1e-9)
+check("slot: W at the primary size", f["w_at"], closed_forms.beverloo_slot(b_slot, 218e-6, 619.0, 0.06, k_slot), 1e-9)
+check("slot: chi2 of exact rates", f["chi2"], 0.0, abs_=1e-12)
+# its error by hand: two points, y = W^(2/3), sigma_y = (2/3) W^(-1/3) sigma_W, the Lagrange weights
+f = fits.beverloo_size(d_slot[:2], w_slot[:2], 0.01 * w_slot[:2], b_slot, 218e-6, exponent=1.5)
+y, sy = w_slot[:2] ** (2 / 3), (2 / 3) * w_slot[:2] ** (-1 / 3) * 0.01 * w_slot[:2]
+l1, l2 = (d_slot[1] - 218e-6) / (d_slot[1] - d_slot[0]), (218e-6 - d_slot[0]) / (d_slot[1] - d_slot[0])
+y_at = l1 * y[0] + l2 * y[1]
+check("slot, two points: its error", f["w_at_se_stat"], 1.5 * y_at ** 0.5 * math.hypot(l1 * sy[0], l2 * sy[1]), 1e-9)
+try:
+    fits.beverloo_size(d_slot, w_slot, 0.01 * w_slot, b_slot, 218e-6, exponent=0.0)
+    failures.append("beverloo_size exponent 0: expected ValueError")
+except ValueError:
+    pass
 
 # two points: the line through them; var(y_at) = (L1 s1)^2 + (L2 s2)^2 with the Lagrange weights
 d2, w2, se2 = np.array([3.3e-3, 3.96e-3]), np.array([0.0915, 0.0823]), np.array([0.001, 0.0014])
