@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""fits.beverloo_size and fits.mean_se (tools/granair_cases/fits.py) on inputs whose answer
+"""fits.beverloo_size, fits.mean_se (tools/granair_cases/fits.py) and size_study's window
+rates and fit over runs on inputs whose answer
 is known: Beverloo rates made with a known k at three parcel sizes (k and the rate at the
 primary size recovered exactly), two points (the extrapolation's error from the two
 Lagrange weights by hand), three points off a line by hand-computed amounts (chi2, the
@@ -11,7 +12,7 @@ import sys
 
 import numpy as np
 
-from granair_cases import closed_forms, fits
+from granair_cases import closed_forms, fits, size_study
 
 failures = []
 
@@ -97,7 +98,27 @@ check("se with r1 < 0", se, np.std([1, 3, 1, 3, 1, 3], ddof=1) / math.sqrt(6), 1
 if not math.isnan(fits.mean_se([1.0, 2.0])[1]):
     failures.append("mean_se of two values: expected NaN")
 
+# size_study.window_rates: m(t) = 2 t up to 0.3 s, then 5 t - 0.9 (rate 2, then 5): the 0.1 s
+# windows from 0.1 to 0.45 s are [0.1, 0.2], [0.2, 0.3], [0.3, 0.4] (the partial last one dropped)
+tt = np.linspace(0.0, 0.5, 1001)
+mm = np.where(tt <= 0.3, 2 * tt, 5 * tt - 0.9)
+rates = size_study.window_rates(tt, mm, 0.1, 0.45, 0.1)
+if rates.size != 3:
+    failures.append(f"window_rates: {rates.size} windows, expected 3")
+for i, want in enumerate((2.0, 2.0, 5.0)):
+    check(f"window rate {i}", rates[i], want, 1e-9)
+# size_study.analyse: the exact slot rates above, sorted by d, every pair on the same line
+runs = [dict(s=s_, d=x, W=w_, se=0.01 * w_) for s_, x, w_ in zip((10, 5, 7.6), d_slot[[2, 0, 1]], w_slot[[2, 0, 1]])]
+res = size_study.analyse(runs, b_slot, 218e-6, exponent=1.5)
+check("analyse: k", res["fit"]["k"], k_slot, 1e-9)
+if [r["s"] for r in runs] != [5, 7.6, 10] or len(res["pairs"]) != 3 or "residuals" in res["fit"]:
+    failures.append(f"analyse: runs {[r['s'] for r in runs]}, {len(res['pairs'])} pairs, keys {sorted(res['fit'])}")
+for p in res["pairs"]:
+    check(f"analyse: pair {p['s']} k", p["k"], k_slot, 1e-9)
+for r in runs:
+    check(f"analyse: line W at s = {r['s']}", r["line_W"], r["W"], 1e-9)
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
-print("beverloo_size, mean_se: all checks passed")
+print("beverloo_size, mean_se, size_study: all checks passed")
