@@ -4,7 +4,7 @@ them (fits.beverloo_size) and extrapolated to the primary grain size. Shared by 
 cases' parcel_size.py (mcc-hopper: circular orifice, wedge-silo: slot).
 
     rates = window_rates(t, m, t0, t1, width)     slopes of a cumulative mass over whole windows
-    res = analyse(runs, outlet, at, exponent)     the fit over runs [{s, d, W, se}], every pair of them
+    res = analyse(runs, outlet, at, exponent)     the fit over runs [{s, d, W, se}], every pair, each left out
     plot_fit(ax, runs, res, at, at_label, target) the common part of the W-against-d figure
 """
 import numpy as np
@@ -28,7 +28,8 @@ def analyse(runs, outlet, at, exponent=2.5):
     """The size fit over `runs` (dicts with s, d [m], W and se [kg/s]; sorted by d here)
     and the fit through every pair of them (how much one run moves the answer). Adds
     residual_sigma and line_W (the fit's W at the run's d) to each run. Returns
-    dict(fit=..., pairs=[{s: [s_i, s_j], k, W, se}]): the fit's entries as
+    dict(fit=..., pairs=[{s: [s_i, s_j], k, W, se}], leave_one_out=[{without_s, k, W, se,
+    chi2, dof}] (the fit without each run, with three runs or more)): the fit's entries as
     fits.beverloo_size's (W at d = at: w_at, w_at_se), without the residuals."""
     if len(runs) < 2:
         raise CaseError(f"size study: {len(runs)} run(s); the size fit needs two or more")
@@ -43,7 +44,12 @@ def analyse(runs, outlet, at, exponent=2.5):
         for j in range(i + 1, len(runs)):
             f2 = fits.beverloo_size(d[[i, j]], w[[i, j]], se[[i, j]], outlet, at, exponent)
             pairs.append(dict(s=[runs[i]["s"], runs[j]["s"]], k=f2["k"], W=f2["w_at"], se=f2["w_at_se"]))
-    return dict(fit=fit, pairs=pairs)
+    drop = []       # the fit without each run in turn (three or more runs): how much one run moves the answer
+    for i in range(len(runs)) if len(runs) >= 3 else ():
+        keep = [j for j in range(len(runs)) if j != i]
+        f = fits.beverloo_size(d[keep], w[keep], se[keep], outlet, at, exponent)
+        drop.append(dict(without_s=runs[i]["s"], k=f["k"], W=f["w_at"], se=f["w_at_se"], chi2=f["chi2"], dof=f["dof"]))
+    return dict(fit=fit, pairs=pairs, leave_one_out=drop)
 
 
 def plot_fit(ax, runs, res, at, at_label, target):

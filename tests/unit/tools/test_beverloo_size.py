@@ -117,6 +117,10 @@ for p in res["pairs"]:
     check(f"analyse: pair {p['s']} k", p["k"], k_slot, 1e-9)
 for r in runs:
     check(f"analyse: line W at s = {r['s']}", r["line_W"], r["W"], 1e-9)
+if [x["without_s"] for x in res["leave_one_out"]] != [5, 7.6, 10]:
+    failures.append(f"analyse: leave_one_out {res['leave_one_out']}")
+for x in res["leave_one_out"]:
+    check(f"analyse: without s = {x['without_s']} k", x["k"], k_slot, 1e-9)
 
 if failures:
     print("\n".join(failures))
