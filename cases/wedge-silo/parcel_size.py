@@ -11,7 +11,8 @@ autocorrelation). Hagen-Beverloo's size term for a slot, W = C rho_b sqrt(g) L (
 at fixed b, makes W^(2/3) linear in the parcel d (gc.size_study.analyse, exponent 1.5);
 the line is extrapolated to the primary lactose d, the number mean of the case's PSD
 (parameters.py psd_moments: 218 um; the parcels are s times it). Every pair of sizes is
-extrapolated too, the fit is repeated without each run in turn, and the circular form
+extrapolated too, the fit is repeated without each run in turn and over the three finest
+sizes alone, and the circular form
 (exponent 2.5) is fitted as the form's sensitivity. Runs with another packing seed
 (reference-parcel-size/seed<n>/s<S>/, `--seed n`) are not in the fit: each is compared
 with the seed-1 run of its size in units of their combined standard error (does the
@@ -120,6 +121,9 @@ def main():
         every = runs + seeds
         fit_all = gc.fits.beverloo_size([r["d"] for r in every], [r["W"] for r in every], [r["se"] for r in every],
                                         b, d0, 1.5)
+    # the three finest sizes alone (nearest the primary d; runs are sorted by d)
+    fine = gc.fits.beverloo_size([r["d"] for r in runs[:3]], [r["W"] for r in runs[:3]], [r["se"] for r in runs[:3]],
+                                 b, d0, 1.5) if len(runs) > 3 else None
     circ = gc.fits.beverloo_size([r["d"] for r in runs], [r["W"] for r in runs], [r["se"] for r in runs], b, d0, 2.5)
     w_ext, w_ext_se = fit["w_at"], fit["w_at_se"]
     bev = gc.closed_forms.beverloo_band("slot", b, d0, rho_b, P.K_RANGE, P.BEVERLOO_C, P.DEPTH)
@@ -137,6 +141,7 @@ def main():
              "window (AR(1)-inflated); w_at_se scaled by the Birge ratio when > 1",
         primary_d_m=d0, runs=runs, fit=fit, mean_settled_bulk_density_kg_m3=rho_b, pairs=pairs,
         leave_one_out=size["leave_one_out"], seed_repeats=seeds, fit_all_seeds=fit_all,
+        finest_three=dict({k: v for k, v in fine.items() if k != "residuals"}, s=[r["s"] for r in runs[:3]]) if fine else None,
         circular_form_sensitivity={k: v for k, v in circ.items() if k != "residuals"},
         hagen_beverloo_primary_kg_s=[bev[0], bev[1]], dem_size_converged_kg_s=w_ext,
         dem_size_converged_se_kg_s=w_ext_se, continuum=cont, target=TARGET)
@@ -171,6 +176,11 @@ def main():
         print(f"  fit over all {len(runs) + len(seeds)} runs (seeds included): k = {fit_all['k']:.3f} +- {fit_all['k_se']:.3f}, "
               f"chi2 {fit_all['chi2']:.2f} on {fit_all['dof']} dof; W({d0 * 1e6:.0f} um) {fit_all['w_at']:.4f} +- "
               f"{fit_all['w_at_se']:.4f} kg/s")
+    if fine:
+        fine_s = [r["s"] for r in runs[:3]]
+        print(f"  the three finest (s = {', '.join(f'{x:.3g}' for x in fine_s)}) alone: k = {fine['k']:.3f} +- "
+              f"{fine['k_se']:.3f}, chi2 {fine['chi2']:.2f} on {fine['dof']} dof, W({d0 * 1e6:.0f} um) = {fine['w_at']:.4f} "
+              f"+- {fine['w_at_se']:.4f}")
     print(f"  circular form (exponent 2.5) instead: k = {circ['k']:.3f}, chi2 {circ['chi2']:.2f}, W = {circ['w_at']:.4f} "
           f"+- {circ['w_at_se']:.4f}; Hagen-Beverloo at {d0 * 1e6:.0f} um (C = {P.BEVERLOO_C}, k = 1..3): "
           f"{bev[0]:.4f}..{bev[1]:.4f} kg/s")
