@@ -8,7 +8,7 @@ material and 0.5-1.5 s window: each run's W (the slope of the discharged mass)
 and its standard error (fits.mean_se of its 50 ms window means: sd / sqrt(n),
 inflated for their lag-1 autocorrelation). Beverloo's size term,
 W = C rho_b sqrt(g) (D - k d)^2.5 at fixed D, makes W^0.4 linear in the parcel
-d: fits.beverloo_size fits that line, checks the points against it (chi2, the
+d: gc.size_study.analyse (fits.beverloo_size) fits that line, checks the points against it (chi2, the
 Birge ratio, residuals in sigmas), and extrapolates to the primary d = 660 um;
 every pair of sizes is extrapolated too (how much one run moves the answer).
 Runs with another packing seed (reference-cg-dem/seed<n>/s<S>/, `Allrun-dem
@@ -89,18 +89,10 @@ def main():
     runs = dem_runs()
     if len(runs) < 2:
         raise gc.CaseError(f"{DEM}: {len(runs)} DEM run(s) with a summary.txt; the size fit needs two or more")
-    d, w, se = (np.array([r[k] for r in runs]) for k in ("d", "W", "se"))
-    fit = gc.fits.beverloo_size(d, w, se, P.D_OUTLET, P.D_PARTICLE)
+    size = gc.size_study.analyse(runs, P.D_OUTLET, P.D_PARTICLE)      # circular orifice: exponent 2.5
+    fit, pairs = size["fit"], size["pairs"]
     rho_b = float(np.mean([r["rho_b"] for r in runs]))
     fit["C"] = (fit["b0"] / P.D_OUTLET) ** 2.5 / (rho_b * math.sqrt(P.G))
-    for r, res in zip(runs, fit["residuals"]):
-        r["residual_sigma"] = res
-        r["line_W"] = max(fit["b0"] + fit["b1"] * r["d"], 0.0) ** 2.5
-    pairs = []
-    for i in range(len(runs)):
-        for j in range(i + 1, len(runs)):
-            f2 = gc.fits.beverloo_size(d[[i, j]], w[[i, j]], se[[i, j]], P.D_OUTLET, P.D_PARTICLE)
-            pairs.append(dict(s=[runs[i]["s"], runs[j]["s"]], k=f2["k"], W=f2["w_at"], se=f2["w_at_se"]))
     w_ext, w_ext_se = fit["w_at"], fit["w_at_se"]
     seeds = []
     for r in dem_runs(sorted(glob.glob(os.path.join(DEM, "seed[0-9]*", "s[0-9]*")))):
@@ -126,7 +118,7 @@ def main():
     result = dict(
         form="W^0.4 = b0 + b1 d (Beverloo, W = C rho_b sqrt(g) (D - k d)^2.5 at D = 25 mm); weighted least squares, "
              "sigma_W = standard error of the 50 ms window means (AR(1)-inflated); w_at_se scaled by the Birge ratio when > 1",
-        primary_d_m=P.D_PARTICLE, runs=runs, fit={k: v for k, v in fit.items() if k != "residuals"},
+        primary_d_m=P.D_PARTICLE, runs=runs, fit=fit,
         mean_settled_bulk_density_kg_m3=rho_b, pairs=pairs,
         dem_size_converged_kg_s=w_ext, dem_size_converged_se_kg_s=w_ext_se, seed_repeats=seeds, fit_all_seeds=fit_all, continuum=cont,
         target=TARGET)
@@ -141,9 +133,10 @@ def main():
                           for r in runs])
     plot(runs, fit, pairs, cont, seeds, os.path.join(a.out, "parcel_size.png"))
     sizes = ", ".join(f"{r['s']:g}" for r in runs)
+    resid = ", ".join(f"{r['residual_sigma']:+.2f}" for r in runs)
     print(f"mcc-hopper parcel size: {len(runs)} DEM runs (s = {sizes}): "
           f"k = {fit['k']:.3f} +- {fit['k_se']:.3f}, C = {fit['C']:.3f}, chi2 {fit['chi2']:.2f} on {fit['dof']} dof "
-          f"(residuals {', '.join(f'{x:+.2f}' for x in fit['residuals'])} sigma); W at d = 660 um "
+          f"(residuals {resid} sigma); W at d = 660 um "
           f"{w_ext:.4f} +- {w_ext_se:.4f} kg/s")
     for p in pairs:
         print(f"  pair s = {p['s'][0]:g}, {p['s'][1]:g}: k = {p['k']:.3f}, W(660 um) = {p['W']:.4f} +- {p['se']:.4f}")
@@ -164,20 +157,10 @@ def main():
 def plot(runs, fit, pairs, cont, seeds, path):
     plt = gc.plots.pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
-    x = np.linspace(0.0, max(r["d"] for r in runs) * 1.1, 200)
-    y = np.clip(fit["b0"] + fit["b1"] * x, 0.0, None) ** 2.5
-    ax.plot(x * 1e3, y, "k-", lw=1, label=f"Beverloo size fit, W^0.4 linear in d: k = {fit['k']:.2f} ± {fit['k_se']:.2f}")
-    ax.errorbar([r["d"] * 1e3 for r in runs], [r["W"] for r in runs], yerr=[r["se"] for r in runs], fmt="o",
-                color="tab:blue", capsize=3, label="cg-DEM at s = " + ", ".join(f"{r['s']:g}" for r in runs) + " (± s.e.)")
+    x = gc.size_study.plot_fit(ax, runs, dict(fit=fit, pairs=pairs), P.D_PARTICLE, "660 µm", TARGET)
     if seeds:
         ax.errorbar([r["d"] * 1e3 for r in seeds], [r["W"] for r in seeds], yerr=[r["se"] for r in seeds], fmt="o",
                     mfc="none", color="tab:blue", capsize=3, label="another packing seed (not in the fit)")
-    ax.errorbar([P.D_PARTICLE * 1e3], [fit["w_at"]], yerr=[fit["w_at_se"]], fmt="s", color="k", capsize=4,
-                label=f"extrapolated to 660 µm: {fit['w_at']:.4f} ± {fit['w_at_se']:.4f} kg/s")
-    ax.axhspan(fit["w_at"] * (1 - TARGET), fit["w_at"] * (1 + TARGET), color="0.85", zorder=0,
-               label="± 15 % of it (issue 16)")
-    for p in pairs:
-        ax.plot([P.D_PARTICLE * 1e3], [p["W"]], "x", color="0.4", ms=5)
     if cont:
         ax.plot([c["d"] * 1e3 for c in cont], [c["W"] for c in cont], "D--", color="tab:red", ms=5, lw=0.8,
                 label="continuum, calibrated mu(I), N = 28, d in I")

@@ -8,6 +8,7 @@ fidelity").
                  [--rheology muI|latzSchmidt] [--rheology-from literature|calibration]
                  [--dem-size demo|study] [--rheology-d D] [--write-every T] [--setup-only]
                  [--fills demo|study] [--until F] [--eta-min V]
+                 [--dilatancy [--dilatancy-rate K] [--dilatancy-relaxation W]]
 
 One run per b and air setting from continuum/template/ (the silo as a plane
 mesh one cell of the whole 60 mm deep with a free-fall region below the slot,
@@ -32,6 +33,9 @@ run of --dem-size (demo: b/6, study: b/7, the calibrated parcels) and that
 run's rate the reference (reference-demo/ or reference-study-b<b>/). The
 cross-validation of README "Cross-validation"; --write-every writes the
 fields at that interval as well (the profiles against the DEM's CG fields).
+--dilatancy feeds the rheology's phi(I) back into the powder's volume
+(`dilatancy on;` in granularProperties, cfd-side/continuum/Dilatancy.H, wired
+as in cases/mcc-hopper/study.py; default off).
 
 Checked (--check exits 1 on a failure): every value finite; the powder mass
 balance within 0.5 % (the outlet flow integrated, and the solver's own); the
@@ -111,7 +115,10 @@ def numbers(a, b_mm, air):
              WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction), WALL_FRICTION=a.wall_friction,
              FREEFALL=freefall, FREEFALL_MM=freefall * 1e3, NZ_FALL=max(2, round(freefall / (b / a.mesh))),
              RHEOLOGY_NAME=a.rheology, RHEOLOGY_FROM=a.rheology_from,
-             WRITE_INTERVAL=a.write_every if a.write_every else a.end)
+             WRITE_INTERVAL=a.write_every if a.write_every else a.end,
+             DILATANCY=(f"dilatancy       on;             // continuum.py --dilatancy: phi(I) in the powder's volume "
+                        f"(Dilatancy.H)\ndilatancyRate   {a.dilatancy_rate:g};\ndilatancyRelaxation "
+                        f"{a.dilatancy_relaxation:g};" if a.dilatancy else "// (no dilatancy: continuum.py --dilatancy)"))
     if a.rheology == "latzSchmidt":
         v.update(RHEOLOGY=latz()[1], T_MIN=latz()[0]["TMin"])
     else:
@@ -255,6 +262,12 @@ def main():
     ap.add_argument("--write-every", type=float, default=None, help="field output interval [s] (default: the end)")
     ap.add_argument("--eta-min", type=float, default=None,
                     help="muI: the viscosity floor [Pa s] (default rho_p d sqrt(g d) of the block's d)")
+    ap.add_argument("--dilatancy", action="store_true",
+                    help="muI: the solid fraction phi(I) fed back into the powder's volume (Dilatancy.H; default off)")
+    ap.add_argument("--dilatancy-rate", type=float, default=P.DILATANCY_RATE,
+                    help=f"with --dilatancy: the rate k of d(phi)/dt = -k phi gammaDot (phi - phi(I)) (default {P.DILATANCY_RATE:g})")
+    ap.add_argument("--dilatancy-relaxation", type=float, default=P.DILATANCY_RELAXATION,
+                    help=f"with --dilatancy: the under-relaxation of its volume source (default {P.DILATANCY_RELAXATION:g})")
     a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "continuum-results" + ("-latz" if a.rheology == "latzSchmidt" else
                                                                              "-calibrated" if a.rheology_from == "calibration" else "")))
     if a.rheology_from == "calibration" and a.rheology != "muI":
@@ -263,6 +276,12 @@ def main():
         ap.error(f"--rheology-d {a.rheology_d:g}: expected a diameter > 0 [m], with --rheology-from calibration")
     if a.eta_min is not None and not (a.eta_min > 0 and a.rheology == "muI"):
         ap.error(f"--eta-min {a.eta_min:g}: expected a viscosity > 0 [Pa s], with --rheology muI")
+    if a.dilatancy and a.rheology != "muI":
+        ap.error("--dilatancy: phi(I) is the muI block's (--rheology muI)")
+    if a.dilatancy_rate != P.DILATANCY_RATE and not (a.dilatancy and a.dilatancy_rate > 0):
+        ap.error(f"--dilatancy-rate {a.dilatancy_rate:g}: expected a rate > 0, with --dilatancy")
+    if a.dilatancy_relaxation != P.DILATANCY_RELAXATION and not (a.dilatancy and 0 < a.dilatancy_relaxation <= 1):
+        ap.error(f"--dilatancy-relaxation {a.dilatancy_relaxation:g}: expected a factor in (0, 1], with --dilatancy")
     if a.write_every is not None and not a.write_every > 0:
         ap.error(f"--write-every {a.write_every:g}: expected an interval > 0 [s]")
     if a.quick:

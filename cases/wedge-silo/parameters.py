@@ -76,6 +76,11 @@ D_LACTOSE = 225e-6       # particle diameter of the rheology and of the Ergun dr
 # solid fraction; the span is not measured for lactose: 0.189 as for MCC
 # spheres (Remmelgas et al. 2019; glass beads ~0.2). Assumed.
 DILATANCY_SPAN = 0.632 - 0.443
+# continuum.py --dilatancy (cfd-side/continuum/Dilatancy.H): the rate k of d(phi)/dt =
+# -k phi gammaDot (phi - phi(I)), Pailha & Pouliquen's (2009), and the under-relaxation
+# of the volume source: the MCC hopper's values (cases/mcc-hopper/parameters.py)
+DILATANCY_RATE = 4.09
+DILATANCY_RELAXATION = 0.2
 
 
 def psd_moments():

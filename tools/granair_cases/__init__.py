@@ -25,6 +25,7 @@
     wall_rings  wall loads (LIGGGHTS mesh stress) per ring of elements, Janssen's slice balance
     field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
     study       the driver of a study of many LIGGGHTS runs: fills once, resumable runs, a job pool, --setup-only, --post-only
+    size_study  the DEM converged in parcel size: window rates, Beverloo's size fit over s and its pairs, its plot
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -37,4 +38,4 @@ class CaseError(Exception):
 
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
-from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study  # noqa: E402,F401
+from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study  # noqa: E402,F401

@@ -3,7 +3,8 @@
     a1, a2 = phi_of_I(i, phi)              phi = a1 / (1 + a2 I)   (Fullard et al. 2019's solid fraction law)
     alpha, se = through_origin(f, y)       y = alpha f, and alpha's standard error
     mean, se = mean_se(x)                  the mean of a correlated series and its standard error
-    fit = beverloo_size(d, w, w_se, D, at) W^0.4 = b0 + b1 d over grain (parcel) sizes d, W at d = at
+    fit = beverloo_size(d, w, w_se, D, at) W^(1/n) = b0 + b1 d over grain (parcel) sizes d, W at d = at
+                                           (n = 2.5 a circular orifice, 1.5 a slot)
 """
 import math
 
@@ -51,12 +52,14 @@ def mean_se(x):
     return float(x.mean()), float(x.std(ddof=1) / math.sqrt(x.size) * math.sqrt((1 + r1) / (1 - r1)))
 
 
-def beverloo_size(d, w, w_se, outlet, at):
+def beverloo_size(d, w, w_se, outlet, at, exponent=2.5):
     """Beverloo's size term over runs at one orifice and several grain (parcel) sizes d.
 
-    W = C rho_b sqrt(g) (D - k d)^2.5 at fixed D, C and rho_b makes y = W^0.4 linear in d:
-    y = b0 + b1 d with b0 = a D, b1 = -a k, so k = -b1 D / b0 whatever C and rho_b are.
-    Weighted least squares with sigma_y = 0.4 W^-0.6 sigma_W (w_se: the standard errors of
+    W = C rho_b sqrt(g) (D - k d)^n at fixed D, C and rho_b (n = `exponent`: 2.5 for a
+    circular orifice of diameter D, Beverloo et al. 1961; 1.5 for a slot of width D,
+    Hagen-Beverloo) makes y = W^(1/n) linear in d: y = b0 + b1 d with b0 = a D, b1 = -a k,
+    so k = -b1 D / b0 whatever C and rho_b are.
+    Weighted least squares with sigma_y = (1/n) W^(1/n - 1) sigma_W (w_se: the standard errors of
     the W). Returns a dict: b0, b1, k, k_se, w_at (W extrapolated to d = at), w_at_se_stat
     (from the weights alone), w_at_se (scaled by the Birge ratio sqrt(chi2/dof) when it
     exceeds 1, i.e. when the points scatter about the line more than their errors allow),
@@ -65,7 +68,10 @@ def beverloo_size(d, w, w_se, outlet, at):
     d, w, w_se = (np.asarray(v, float) for v in (d, w, w_se))
     if d.size < 2 or not (d.size == w.size == w_se.size) or np.any(w_se <= 0) or np.any(w <= 0):
         raise ValueError(f"beverloo_size: need >= 2 sizes with W > 0 and errors > 0, got d {d}, W {w}, se {w_se}")
-    y, sy = w ** 0.4, 0.4 * w ** -0.6 * w_se
+    if not exponent > 0:
+        raise ValueError(f"beverloo_size: exponent {exponent}, expected > 0 (2.5 circular, 1.5 slot)")
+    n = float(exponent)
+    y, sy = w ** (1 / n), w ** (1 / n - 1) * w_se / n
     a = np.column_stack([np.ones_like(d), d]) / sy[:, None]
     cov = np.linalg.inv(a.T @ a)
     b = cov @ (a.T @ (y / sy))
@@ -78,10 +84,11 @@ def beverloo_size(d, w, w_se, outlet, at):
     def spread(grad, c):
         return math.sqrt(float(grad @ c @ grad))
     y_at = float(b[0] + b[1] * at)
-    w_at = max(y_at, 0.0) ** 2.5
+    w_at = max(y_at, 0.0) ** n
     se_y = spread(np.array([1.0, at]), cov)
     k = float(-b[1] * outlet / b[0])
     k_grad = np.array([b[1] * outlet / b[0] ** 2, -outlet / b[0]])
+    dw = n * max(y_at, 0.0) ** (n - 1) * se_y        # dW/dy sigma_y at d = at
     return dict(b0=float(b[0]), b1=float(b[1]), k=k, k_se=spread(k_grad, cov) * scale, w_at=w_at,
-                w_at_se_stat=2.5 * max(y_at, 0.0) ** 1.5 * se_y, w_at_se=2.5 * max(y_at, 0.0) ** 1.5 * se_y * scale,
-                chi2=chi2, dof=dof, birge=birge, residuals=[float(v) for v in res])
+                w_at_se_stat=dw, w_at_se=dw * scale, chi2=chi2, dof=dof, birge=birge,
+                residuals=[float(v) for v in res], exponent=n)

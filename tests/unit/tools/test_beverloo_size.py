@@ -1,16 +1,18 @@
 #!/usr/bin/env python3
-"""fits.beverloo_size and fits.mean_se (tools/granair_cases/fits.py) on inputs whose answer
+"""fits.beverloo_size, fits.mean_se (tools/granair_cases/fits.py) and size_study's window
+rates and fit over runs on inputs whose answer
 is known: Beverloo rates made with a known k at three parcel sizes (k and the rate at the
 primary size recovered exactly), two points (the extrapolation's error from the two
 Lagrange weights by hand), three points off a line by hand-computed amounts (chi2, the
-Birge ratio and the scaled error), bad input, and the standard error of a short series
+Birge ratio and the scaled error), the slot form (exponent 1.5: k, the rate and the
+two-point error), bad input, and the standard error of a short series
 with a hand-computed lag-1 autocorrelation."""
 import math
 import sys
 
 import numpy as np
 
-from granair_cases import closed_forms, fits
+from granair_cases import closed_forms, fits, size_study
 
 failures = []
 
@@ -30,6 +32,27 @@ check("W at the primary size", f["w_at"], closed_forms.beverloo_circular(D, 660e
 check("chi2 of exact rates", f["chi2"], 0.0, abs_=1e-12)
 check("dof", f["dof"], 1)
 check("exact rates: scaled error = statistical error", f["w_at_se"], f["w_at_se_stat"], 1e-12)
+
+# the slot form (exponent 1.5, Hagen-Beverloo): exact rates of a 10 mm slot, 60 mm long, k = 1.4,
+# at the parcel sizes of s = 5, 7.6, 10 (218 um primaries): k and the rate at 218 um recovered exactly
+b_slot, k_slot = 10e-3, 1.4
+d_slot = np.array([5, 7.6, 10]) * 218e-6
+w_slot = np.array([closed_forms.beverloo_slot(b_slot, x, 619.0, 0.06, k_slot) for x in d_slot])
+f = fits.beverloo_size(d_slot, w_slot, 0.01 * w_slot, b_slot, 218e-6, exponent=1.5)
+check("slot: k from exact rates", f["k"], k_slot, 1e-9)
+check("slot: W at the primary size", f["w_at"], closed_forms.beverloo_slot(b_slot, 218e-6, 619.0, 0.06, k_slot), 1e-9)
+check("slot: chi2 of exact rates", f["chi2"], 0.0, abs_=1e-12)
+# its error by hand: two points, y = W^(2/3), sigma_y = (2/3) W^(-1/3) sigma_W, the Lagrange weights
+f = fits.beverloo_size(d_slot[:2], w_slot[:2], 0.01 * w_slot[:2], b_slot, 218e-6, exponent=1.5)
+y, sy = w_slot[:2] ** (2 / 3), (2 / 3) * w_slot[:2] ** (-1 / 3) * 0.01 * w_slot[:2]
+l1, l2 = (d_slot[1] - 218e-6) / (d_slot[1] - d_slot[0]), (218e-6 - d_slot[0]) / (d_slot[1] - d_slot[0])
+y_at = l1 * y[0] + l2 * y[1]
+check("slot, two points: its error", f["w_at_se_stat"], 1.5 * y_at ** 0.5 * math.hypot(l1 * sy[0], l2 * sy[1]), 1e-9)
+try:
+    fits.beverloo_size(d_slot, w_slot, 0.01 * w_slot, b_slot, 218e-6, exponent=0.0)
+    failures.append("beverloo_size exponent 0: expected ValueError")
+except ValueError:
+    pass
 
 # two points: the line through them; var(y_at) = (L1 s1)^2 + (L2 s2)^2 with the Lagrange weights
 d2, w2, se2 = np.array([3.3e-3, 3.96e-3]), np.array([0.0915, 0.0823]), np.array([0.001, 0.0014])
@@ -75,7 +98,31 @@ check("se with r1 < 0", se, np.std([1, 3, 1, 3, 1, 3], ddof=1) / math.sqrt(6), 1
 if not math.isnan(fits.mean_se([1.0, 2.0])[1]):
     failures.append("mean_se of two values: expected NaN")
 
+# size_study.window_rates: m(t) = 2 t up to 0.3 s, then 5 t - 0.9 (rate 2, then 5): the 0.1 s
+# windows from 0.1 to 0.45 s are [0.1, 0.2], [0.2, 0.3], [0.3, 0.4] (the partial last one dropped)
+tt = np.linspace(0.0, 0.5, 1001)
+mm = np.where(tt <= 0.3, 2 * tt, 5 * tt - 0.9)
+rates = size_study.window_rates(tt, mm, 0.1, 0.45, 0.1)
+if rates.size != 3:
+    failures.append(f"window_rates: {rates.size} windows, expected 3")
+for i, want in enumerate((2.0, 2.0, 5.0)):
+    check(f"window rate {i}", rates[i], want, 1e-9)
+# size_study.analyse: the exact slot rates above, sorted by d, every pair on the same line
+runs = [dict(s=s_, d=x, W=w_, se=0.01 * w_) for s_, x, w_ in zip((10, 5, 7.6), d_slot[[2, 0, 1]], w_slot[[2, 0, 1]])]
+res = size_study.analyse(runs, b_slot, 218e-6, exponent=1.5)
+check("analyse: k", res["fit"]["k"], k_slot, 1e-9)
+if [r["s"] for r in runs] != [5, 7.6, 10] or len(res["pairs"]) != 3 or "residuals" in res["fit"]:
+    failures.append(f"analyse: runs {[r['s'] for r in runs]}, {len(res['pairs'])} pairs, keys {sorted(res['fit'])}")
+for p in res["pairs"]:
+    check(f"analyse: pair {p['s']} k", p["k"], k_slot, 1e-9)
+for r in runs:
+    check(f"analyse: line W at s = {r['s']}", r["line_W"], r["W"], 1e-9)
+if [x["without_s"] for x in res["leave_one_out"]] != [5, 7.6, 10]:
+    failures.append(f"analyse: leave_one_out {res['leave_one_out']}")
+for x in res["leave_one_out"]:
+    check(f"analyse: without s = {x['without_s']} k", x["k"], k_slot, 1e-9)
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
-print("beverloo_size, mean_se: all checks passed")
+print("beverloo_size, mean_se, size_study: all checks passed")

@@ -1,0 +1,71 @@
+"""The coarse-grained DEM converged in its resolution parameter, the parcel size: runs
+at several coarse-graining factors s of one orifice, Beverloo's size term fitted over
+them (fits.beverloo_size) and extrapolated to the primary grain size. Shared by the
+cases' parcel_size.py (mcc-hopper: circular orifice, wedge-silo: slot).
+
+    rates = window_rates(t, m, t0, t1, width)     slopes of a cumulative mass over whole windows
+    res = analyse(runs, outlet, at, exponent)     the fit over runs [{s, d, W, se}], every pair, each left out
+    plot_fit(ax, runs, res, at, at_label, target) the common part of the W-against-d figure
+"""
+import numpy as np
+
+from . import CaseError
+from . import fits
+
+
+def window_rates(t, m, t0, t1, width):
+    """The mass flow in each whole window of `width` [s] from t0 up to t1: the rise of
+    the cumulative mass m(t) (interpolated at the window edges) over the width."""
+    t, m = np.asarray(t, float), np.asarray(m, float)
+    n = int(np.floor((t1 - t0) / width + 1e-9))
+    if n < 1:
+        raise CaseError(f"window_rates: the window {t0:g}..{t1:g} s holds no whole {width:g} s window")
+    edges = t0 + width * np.arange(n + 1)
+    return np.diff(np.interp(edges, t, m)) / width
+
+
+def analyse(runs, outlet, at, exponent=2.5):
+    """The size fit over `runs` (dicts with s, d [m], W and se [kg/s]; sorted by d here)
+    and the fit through every pair of them (how much one run moves the answer). Adds
+    residual_sigma and line_W (the fit's W at the run's d) to each run. Returns
+    dict(fit=..., pairs=[{s: [s_i, s_j], k, W, se}], leave_one_out=[{without_s, k, W, se,
+    chi2, dof}] (the fit without each run, with three runs or more)): the fit's entries as
+    fits.beverloo_size's (W at d = at: w_at, w_at_se), without the residuals."""
+    if len(runs) < 2:
+        raise CaseError(f"size study: {len(runs)} run(s); the size fit needs two or more")
+    runs.sort(key=lambda r: r["d"])
+    d, w, se = (np.array([r[k] for r in runs]) for k in ("d", "W", "se"))
+    fit = fits.beverloo_size(d, w, se, outlet, at, exponent)
+    for r, res in zip(runs, fit.pop("residuals")):
+        r["residual_sigma"] = res
+        r["line_W"] = max(fit["b0"] + fit["b1"] * r["d"], 0.0) ** exponent
+    pairs = []
+    for i in range(len(runs)):
+        for j in range(i + 1, len(runs)):
+            f2 = fits.beverloo_size(d[[i, j]], w[[i, j]], se[[i, j]], outlet, at, exponent)
+            pairs.append(dict(s=[runs[i]["s"], runs[j]["s"]], k=f2["k"], W=f2["w_at"], se=f2["w_at_se"]))
+    drop = []       # the fit without each run in turn (three or more runs): how much one run moves the answer
+    for i in range(len(runs)) if len(runs) >= 3 else ():
+        keep = [j for j in range(len(runs)) if j != i]
+        f = fits.beverloo_size(d[keep], w[keep], se[keep], outlet, at, exponent)
+        drop.append(dict(without_s=runs[i]["s"], k=f["k"], W=f["w_at"], se=f["w_at_se"], chi2=f["chi2"], dof=f["dof"]))
+    return dict(fit=fit, pairs=pairs, leave_one_out=drop)
+
+
+def plot_fit(ax, runs, res, at, at_label, target):
+    """The fit line (W^(1/n) linear in d, drawn as W), the runs with their standard
+    errors, W extrapolated to d = at (`at_label`, e.g. "660 µm") with its error, the band
+    of +- `target` about it and the pairs' extrapolations (x). Returns the line's x range [m]."""
+    fit, n = res["fit"], res["fit"]["exponent"]
+    x = np.linspace(0.0, max(r["d"] for r in runs) * 1.1, 200)
+    ax.plot(x * 1e3, np.clip(fit["b0"] + fit["b1"] * x, 0.0, None) ** n, "k-", lw=1,
+            label=f"Beverloo size fit, W^(1/{n:g}) linear in d: k = {fit['k']:.2f} ± {fit['k_se']:.2f}")
+    ax.errorbar([r["d"] * 1e3 for r in runs], [r["W"] for r in runs], yerr=[r["se"] for r in runs], fmt="o",
+                color="tab:blue", capsize=3, label="cg-DEM at s = " + ", ".join(f"{r['s']:.3g}" for r in runs) + " (± s.e.)")
+    ax.errorbar([at * 1e3], [fit["w_at"]], yerr=[fit["w_at_se"]], fmt="s", color="k", capsize=4,
+                label=f"extrapolated to {at_label}: {fit['w_at']:.4f} ± {fit['w_at_se']:.4f} kg/s")
+    ax.axhspan(fit["w_at"] * (1 - target), fit["w_at"] * (1 + target), color="0.85", zorder=0,
+               label=f"± {100 * target:g} % of it (issue 16)")
+    for p in res["pairs"]:
+        ax.plot([at * 1e3], [p["W"]], "x", color="0.4", ms=5)
+    return x
