@@ -133,9 +133,7 @@ def write_run(a, n, run):
                   WALL_U=gc.foam.wall_velocity(a.walls, a.wall_friction),
                   MAX_CO=a.max_co, TRANSPOSE=a.transpose_stress,
                   AIR_MODEL="darcyErgun" if a.air else "none", DIAMETER=f"{d:.6g}",
-                  DILATANCY=(f"dilatancy       on;             // study.py --dilatancy: phi(I) in the powder's volume "
-                             f"(Dilatancy.H)\ndilatancyRate   {a.dilatancy_rate:g};\ndilatancyRelaxation {a.dilatancy_relaxation:g};"
-                             if a.dilatancy else ""),
+                  DILATANCY=gc.dilatancy.block(a, "study.py"),
                   RHEOLOGY=rheology)
     gc.template.render(os.path.join(HERE, "template"), run, values)
     if latz:
@@ -327,12 +325,7 @@ def main():
                          "calibration of the coarse-grained DEM's parcels (cases/rheology-calibration)")
     ap.add_argument("--rheology-d", type=float, default=None,
                     help="with the calibration: the grain diameter of I [m] instead of the parcel's (sensitivity)")
-    ap.add_argument("--dilatancy", action="store_true",
-                    help="the solid fraction phi(I) fed back into the powder's volume (Dilatancy.H; default off)")
-    ap.add_argument("--dilatancy-rate", type=float, default=P.DILATANCY_RATE,
-                    help=f"with --dilatancy: the rate k of d(phi)/dt = -k phi gammaDot (phi - phi(I)) (default {P.DILATANCY_RATE:g})")
-    ap.add_argument("--dilatancy-relaxation", type=float, default=P.DILATANCY_RELAXATION,
-                    help=f"with --dilatancy: the under-relaxation of its volume source (default {P.DILATANCY_RELAXATION:g})")
+    gc.dilatancy.options(ap, P.DILATANCY_RATE, P.DILATANCY_RELAXATION)
     ap.add_argument("--ascii", action="store_true", help="write the fields as ASCII (for the field profiles)")
     ap.add_argument("--eta-min", type=float, default=None,
                     help="viscosity floor of mu(I) [Pa s] (default the block's rho_p d sqrt(g d))")
@@ -358,10 +351,7 @@ def main():
         ap.error("--rheology-from calibration: the calibration is a muI block (--rheology muI)")
     if a.rheology_d is not None and not (a.rheology_d > 0 and a.rheology_from == "calibration"):
         ap.error(f"--rheology-d {a.rheology_d:g}: expected a diameter > 0 [m], with --rheology-from calibration")
-    if a.dilatancy_rate != P.DILATANCY_RATE and not (a.dilatancy and a.dilatancy_rate > 0):
-        ap.error(f"--dilatancy-rate {a.dilatancy_rate:g}: expected a rate > 0, with --dilatancy")
-    if a.dilatancy_relaxation != P.DILATANCY_RELAXATION and not (a.dilatancy and 0 < a.dilatancy_relaxation <= 1):
-        ap.error(f"--dilatancy-relaxation {a.dilatancy_relaxation:g}: expected a factor in (0, 1], with --dilatancy")
+    gc.dilatancy.check(ap, a, P.DILATANCY_RATE, P.DILATANCY_RELAXATION)
     if not a.max_co > 0:
         ap.error(f"--max-co {a.max_co:g}: expected a Courant number > 0")
     if a.eta_min is not None and not a.eta_min > 0:

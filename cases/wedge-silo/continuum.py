@@ -116,9 +116,7 @@ def numbers(a, b_mm, air):
              FREEFALL=freefall, FREEFALL_MM=freefall * 1e3, NZ_FALL=max(2, round(freefall / (b / a.mesh))),
              RHEOLOGY_NAME=a.rheology, RHEOLOGY_FROM=a.rheology_from,
              WRITE_INTERVAL=a.write_every if a.write_every else a.end,
-             DILATANCY=(f"dilatancy       on;             // continuum.py --dilatancy: phi(I) in the powder's volume "
-                        f"(Dilatancy.H)\ndilatancyRate   {a.dilatancy_rate:g};\ndilatancyRelaxation "
-                        f"{a.dilatancy_relaxation:g};" if a.dilatancy else "// (no dilatancy: continuum.py --dilatancy)"))
+             DILATANCY=gc.dilatancy.block(a, "continuum.py", off="// (no dilatancy: continuum.py --dilatancy)"))
     if a.rheology == "latzSchmidt":
         v.update(RHEOLOGY=latz()[1], T_MIN=latz()[0]["TMin"])
     else:
@@ -262,12 +260,7 @@ def main():
     ap.add_argument("--write-every", type=float, default=None, help="field output interval [s] (default: the end)")
     ap.add_argument("--eta-min", type=float, default=None,
                     help="muI: the viscosity floor [Pa s] (default rho_p d sqrt(g d) of the block's d)")
-    ap.add_argument("--dilatancy", action="store_true",
-                    help="muI: the solid fraction phi(I) fed back into the powder's volume (Dilatancy.H; default off)")
-    ap.add_argument("--dilatancy-rate", type=float, default=P.DILATANCY_RATE,
-                    help=f"with --dilatancy: the rate k of d(phi)/dt = -k phi gammaDot (phi - phi(I)) (default {P.DILATANCY_RATE:g})")
-    ap.add_argument("--dilatancy-relaxation", type=float, default=P.DILATANCY_RELAXATION,
-                    help=f"with --dilatancy: the under-relaxation of its volume source (default {P.DILATANCY_RELAXATION:g})")
+    gc.dilatancy.options(ap, P.DILATANCY_RATE, P.DILATANCY_RELAXATION)
     a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "continuum-results" + ("-latz" if a.rheology == "latzSchmidt" else
                                                                              "-calibrated" if a.rheology_from == "calibration" else "")))
     if a.rheology_from == "calibration" and a.rheology != "muI":
@@ -278,10 +271,7 @@ def main():
         ap.error(f"--eta-min {a.eta_min:g}: expected a viscosity > 0 [Pa s], with --rheology muI")
     if a.dilatancy and a.rheology != "muI":
         ap.error("--dilatancy: phi(I) is the muI block's (--rheology muI)")
-    if a.dilatancy_rate != P.DILATANCY_RATE and not (a.dilatancy and a.dilatancy_rate > 0):
-        ap.error(f"--dilatancy-rate {a.dilatancy_rate:g}: expected a rate > 0, with --dilatancy")
-    if a.dilatancy_relaxation != P.DILATANCY_RELAXATION and not (a.dilatancy and 0 < a.dilatancy_relaxation <= 1):
-        ap.error(f"--dilatancy-relaxation {a.dilatancy_relaxation:g}: expected a factor in (0, 1], with --dilatancy")
+    gc.dilatancy.check(ap, a, P.DILATANCY_RATE, P.DILATANCY_RELAXATION)
     if a.write_every is not None and not a.write_every > 0:
         ap.error(f"--write-every {a.write_every:g}: expected an interval > 0 [s]")
     if a.quick:

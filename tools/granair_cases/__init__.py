@@ -38,4 +38,4 @@ class CaseError(Exception):
 
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
-from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study  # noqa: E402,F401
+from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
