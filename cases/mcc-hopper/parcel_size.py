@@ -107,14 +107,8 @@ def main():
         every = runs + seeds
         fit_all = gc.fits.beverloo_size([r["d"] for r in every], [r["W"] for r in every], [r["se"] for r in every],
                                         P.D_OUTLET, P.D_PARTICLE)
-    dem_at = {round(r["d"] * 1e6): r for r in runs}
     cont = continuum_runs()
-    for c in cont:
-        c["over_dem_converged"] = c["W"] / w_ext
-        c["over_dem_converged_band"] = [c["W"] / (w_ext + w_ext_se), c["W"] / (w_ext - w_ext_se)]
-        same = dem_at.get(round(c["d"] * 1e6))
-        c["over_dem_same_d"] = c["W"] / same["W"] if same else None
-        c["within_target"] = abs(c["over_dem_converged"] - 1) <= TARGET
+    gc.size_study.against(cont, runs, w_ext, w_ext_se, TARGET)
     result = dict(
         form="W^0.4 = b0 + b1 d (Beverloo, W = C rho_b sqrt(g) (D - k d)^2.5 at D = 25 mm); weighted least squares, "
              "sigma_W = standard error of the 50 ms window means (AR(1)-inflated); w_at_se scaled by the Birge ratio when > 1",

@@ -128,13 +128,7 @@ def main():
     w_ext, w_ext_se = fit["w_at"], fit["w_at_se"]
     bev = gc.closed_forms.beverloo_band("slot", b, d0, rho_b, P.K_RANGE, P.BEVERLOO_C, P.DEPTH)
     cont = continuum_runs()
-    dem_at = {round(r["d"] * 1e6): r for r in runs}
-    for c in cont:
-        c["over_dem_converged"] = c["W"] / w_ext
-        c["over_dem_converged_band"] = [c["W"] / (w_ext + w_ext_se), c["W"] / (w_ext - w_ext_se)]
-        same = dem_at.get(round(c["d"] * 1e6))
-        c["over_dem_same_d"] = c["W"] / same["W"] if same else None
-        c["within_target"] = abs(c["over_dem_converged"] - 1) <= TARGET
+    gc.size_study.against(cont, runs, w_ext, w_ext_se, TARGET)
     result = dict(
         form="W^(2/3) = b0 + b1 d (Hagen-Beverloo slot, W = C rho_b sqrt(g) L (b - k d)^1.5 at b = 10 mm, L = 60 mm); "
              f"weighted least squares, sigma_W = standard error of the {WINDOW * 1e3:g} ms window rates in the steady "

@@ -6,6 +6,7 @@ cases' parcel_size.py (mcc-hopper: circular orifice, wedge-silo: slot).
     rates = window_rates(t, m, t0, t1, width)     slopes of a cumulative mass over whole windows
     res = analyse(runs, outlet, at, exponent)     the fit over runs [{s, d, W, se}], every pair, each left out
     plot_fit(ax, runs, res, at, at_label, target) the common part of the W-against-d figure
+    against(levels, runs, w, w_se, target)        another level's runs [{d, W}] over the size-converged W
 """
 import numpy as np
 
@@ -69,3 +70,17 @@ def plot_fit(ax, runs, res, at, at_label, target):
     for p in res["pairs"]:
         ax.plot([at * 1e3], [p["W"]], "x", color="0.4", ms=5)
     return x
+
+
+def against(levels, runs, w, w_se, target):
+    """Each of another level's runs ({d: the grain size its I uses, W}, e.g. the continuum's)
+    against the size-converged DEM rate w +- w_se: the ratio, its band, the ratio to the DEM
+    run of the same d if there is one, and whether the ratio is within 1 +- target. In place."""
+    dem_at = {round(r["d"] * 1e6): r for r in runs}
+    for c in levels:
+        c["over_dem_converged"] = c["W"] / w
+        c["over_dem_converged_band"] = [c["W"] / (w + w_se), c["W"] / (w - w_se)]
+        same = dem_at.get(round(c["d"] * 1e6))
+        c["over_dem_same_d"] = c["W"] / same["W"] if same else None
+        c["within_target"] = abs(c["over_dem_converged"] - 1) <= target
+    return levels

@@ -122,6 +122,17 @@ if [x["without_s"] for x in res["leave_one_out"]] != [5, 7.6, 10]:
 for x in res["leave_one_out"]:
     check(f"analyse: without s = {x['without_s']} k", x["k"], k_slot, 1e-9)
 
+# size_study.against: W 0.12 over a converged 0.10 +- 0.01 is 1.2 (band 1.2/1.1 .. 1.2/0.9),
+# over the DEM run of the same d (the s = 5 run above) W / that run's W, and outside 15 %
+lv = size_study.against([dict(d=runs[0]["d"], W=0.12), dict(d=1e-3, W=0.105)], runs, 0.10, 0.01, 0.15)
+check("against: ratio", lv[0]["over_dem_converged"], 1.2)
+check("against: band low", lv[0]["over_dem_converged_band"][0], 0.12 / 0.11)
+check("against: band high", lv[0]["over_dem_converged_band"][1], 0.12 / 0.09)
+check("against: same d", lv[0]["over_dem_same_d"], 0.12 / runs[0]["W"])
+if lv[0]["within_target"] or not lv[1]["within_target"] or lv[1]["over_dem_same_d"] is not None:
+    failures.append(f"against: within_target {lv[0]['within_target']}, {lv[1]['within_target']}, "
+                    f"same d {lv[1]['over_dem_same_d']}")
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
