@@ -51,7 +51,8 @@ SERIES_BLOCK = 1e-3     # [s] timeseries.csv's block means
 def numbers(a, b_mm, air):
     c = types.SimpleNamespace(fills="demo", rheology_from="literature", freefall=None, rheology="muI",
                               mesh=a.mesh, end=a.end, walls="coulomb", wall_friction=P.WALL_FRICTION,
-                              write_every=a.chunk, rheology_d=None, dem_size="demo", eta_min=None)
+                              write_every=a.chunk, rheology_d=None, dem_size="demo", eta_min=None,
+                              dilatancy=False)
     v = continuum.numbers(c, b_mm, air)
     phi = v["RHO_B"] / P.RHO_P
     dx = b_mm * 1e-3 / a.mesh
