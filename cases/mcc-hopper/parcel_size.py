@@ -94,19 +94,8 @@ def main():
     rho_b = float(np.mean([r["rho_b"] for r in runs]))
     fit["C"] = (fit["b0"] / P.D_OUTLET) ** 2.5 / (rho_b * math.sqrt(P.G))
     w_ext, w_ext_se = fit["w_at"], fit["w_at_se"]
-    seeds = []
-    for r in dem_runs(sorted(glob.glob(os.path.join(DEM, "seed[0-9]*", "s[0-9]*")))):
-        ref = next((x for x in runs if abs(x["s"] - r["s"]) < 1e-9), None)
-        if ref:
-            r["seed_dir"] = r["folder"]
-            r["W_seed1"], r["se_seed1"] = ref["W"], ref["se"]
-            r["z"] = (r["W"] - ref["W"]) / math.hypot(r["se"], ref["se"])
-            seeds.append(r)
-    fit_all = None
-    if seeds:
-        every = runs + seeds
-        fit_all = gc.fits.beverloo_size([r["d"] for r in every], [r["W"] for r in every], [r["se"] for r in every],
-                                        P.D_OUTLET, P.D_PARTICLE)
+    seeds, fit_all = gc.size_study.seed_repeats(
+        runs, dem_runs(sorted(glob.glob(os.path.join(DEM, "seed[0-9]*", "s[0-9]*")))), P.D_OUTLET, P.D_PARTICLE)
     cont = continuum_runs()
     gc.size_study.against(cont, runs, w_ext, w_ext_se, TARGET)
     result = dict(

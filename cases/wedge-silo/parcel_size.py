@@ -110,17 +110,8 @@ def main():
     fit, pairs = size["fit"], size["pairs"]
     rho_b = float(np.mean([r["rho_b"] for r in runs]))
     fit["C"] = (fit["b0"] / b) ** 1.5 / (rho_b * math.sqrt(P.G) * P.DEPTH)
-    seeds = []          # repeats with another packing seed (seed<n>/s<S>/): not in the fit
-    for r in dem_runs(os.path.join("seed[0-9]*", "s[0-9]*")):
-        ref = next((x for x in runs if abs(x["s"] - r["s"]) < 1e-9), None)
-        if ref:
-            r.update(W_seed1=ref["W"], se_seed1=ref["se"], z=(r["W"] - ref["W"]) / math.hypot(r["se"], ref["se"]))
-            seeds.append(r)
-    fit_all = None
-    if seeds:
-        every = runs + seeds
-        fit_all = gc.fits.beverloo_size([r["d"] for r in every], [r["W"] for r in every], [r["se"] for r in every],
-                                        b, d0, 1.5)
+    # repeats with another packing seed (seed<n>/s<S>/): not in the fit
+    seeds, fit_all = gc.size_study.seed_repeats(runs, dem_runs(os.path.join("seed[0-9]*", "s[0-9]*")), b, d0, 1.5)
     # the three finest sizes alone (nearest the primary d; runs are sorted by d)
     fine = gc.fits.beverloo_size([r["d"] for r in runs[:3]], [r["W"] for r in runs[:3]], [r["se"] for r in runs[:3]],
                                  b, d0, 1.5) if len(runs) > 3 else None

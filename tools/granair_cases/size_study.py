@@ -6,8 +6,11 @@ cases' parcel_size.py (mcc-hopper: circular orifice, wedge-silo: slot).
     rates = window_rates(t, m, t0, t1, width)     slopes of a cumulative mass over whole windows
     res = analyse(runs, outlet, at, exponent)     the fit over runs [{s, d, W, se}], every pair, each left out
     plot_fit(ax, runs, res, at, at_label, target) the common part of the W-against-d figure
+    seeds, fit_all = seed_repeats(runs, repeats, outlet, at, exponent)   repeats against the runs of their s
     against(levels, runs, w, w_se, target)        another level's runs [{d, W}] over the size-converged W
 """
+import math
+
 import numpy as np
 
 from . import CaseError
@@ -52,6 +55,24 @@ def analyse(runs, outlet, at, exponent=2.5):
         drop.append(dict(without_s=runs[i]["s"], k=f["k"], W=f["w_at"], se=f["w_at_se"], chi2=f["chi2"], dof=f["dof"]))
     return dict(fit=fit, pairs=pairs, leave_one_out=drop)
 
+
+
+def seed_repeats(runs, repeats, outlet, at, exponent=2.5):
+    """Runs with another packing seed (not in the fit) against the run of their s in `runs`:
+    each repeat that has one gets W_seed1, se_seed1 and z, their difference in units of the
+    combined standard error (does the window error cover the run-to-run scatter?). Returns
+    (those repeats, the size fit over runs and repeats together, or None without repeats)."""
+    seeds = []
+    for r in repeats:
+        ref = next((x for x in runs if abs(x["s"] - r["s"]) < 1e-9), None)
+        if ref:
+            r.update(W_seed1=ref["W"], se_seed1=ref["se"], z=(r["W"] - ref["W"]) / math.hypot(r["se"], ref["se"]))
+            seeds.append(r)
+    if not seeds:
+        return seeds, None
+    every = runs + seeds
+    return seeds, fits.beverloo_size([r["d"] for r in every], [r["W"] for r in every], [r["se"] for r in every],
+                                     outlet, at, exponent)
 
 def plot_fit(ax, runs, res, at, at_label, target):
     """The fit line (W^(1/n) linear in d, drawn as W), the runs with their standard

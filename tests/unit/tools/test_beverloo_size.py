@@ -133,6 +133,17 @@ if lv[0]["within_target"] or not lv[1]["within_target"] or lv[1]["over_dem_same_
     failures.append(f"against: within_target {lv[0]['within_target']}, {lv[1]['within_target']}, "
                     f"same d {lv[1]['over_dem_same_d']}")
 
+# size_study.seed_repeats: a repeat of the s = 5 run 0.003 kg/s higher, the two s.e. 0.00225 and 0.0015,
+# is z = 0.003 / sqrt(0.00225^2 + 0.0015^2) = 1.1094; a repeat of an s with no seed-1 run is left out
+reps = [dict(s=5, d=runs[0]["d"], W=runs[0]["W"] + 0.003, se=0.0015), dict(s=99, d=0.01, W=0.1, se=0.001)]
+old_se = runs[0]["se"]
+runs[0]["se"] = 0.00225
+sd, fa = size_study.seed_repeats(runs, reps, b_slot, 218e-6, 1.5)
+check("seed_repeats: z", sd[0]["z"], 0.003 / (0.00225 ** 2 + 0.0015 ** 2) ** 0.5, 1e-9)
+if len(sd) != 1 or sd[0]["W_seed1"] != runs[0]["W"] or fa is None or size_study.seed_repeats(runs, [], b_slot, 218e-6, 1.5) != ([], None):
+    failures.append(f"seed_repeats: {len(sd)} repeats, fit over all {fa is not None}")
+runs[0]["se"] = old_se
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
