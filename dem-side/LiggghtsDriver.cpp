@@ -51,6 +51,25 @@ bool writable(const std::string& path) {
     return true;
 }
 
+// The two problems a list of fluid forces can have, worded once for
+// setFluidForces (the whole array) and setFluidForce/endFluidForces (one at a time).
+std::string forceCountProblem(std::size_t given, std::size_t particles) {
+    std::ostringstream problem;
+    problem << "setFluidForces: " << given << " forces given for " << particles
+            << " particles of the last getParticles() call on this rank";
+    return problem.str();
+}
+
+std::string nonFiniteForceProblem(int tag, const double* f) {
+    std::ostringstream problem;
+    problem.precision(10);
+    problem << "setFluidForces: fluid force on particle " << tag << " is (" << f[0] << ' ' << f[1] << ' ' << f[2]
+            << ") N, expected finite values";
+    return problem.str();
+}
+
+bool allFinite3(const double* f) { return std::isfinite(f[0]) && std::isfinite(f[1]) && std::isfinite(f[2]); }
+
 }  // namespace
 
 void LiggghtsDriver::checkLogDir() const {
@@ -199,19 +218,13 @@ std::string LiggghtsDriver::findLastParticles() {
 }
 
 void LiggghtsDriver::setFluidForces(const double* xyz, std::size_t n) {
-    const Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>> forces(xyz, 3, static_cast<Eigen::Index>(n));
     if (!forces_) fail<Error>("LiggghtsDriver::setFluidForces called before enableFluidForces()");
-    std::ostringstream problem;
-    problem.precision(10);
-    if (n != lastTags_.size())
-        problem << "setFluidForces: " << n << " forces given for "
-                << lastTags_.size() << " particles of the last getParticles() call on this rank";
-    for (std::size_t k = 0; problem.tellp() == 0 && k < n; ++k)
-        if (!forces.col(k).allFinite())
-            problem << "setFluidForces: fluid force on particle " << lastTags_[k] << " is ("
-                    << forces.col(k).transpose() << ") N, expected finite values";
-    if (problem.tellp() == 0) problem << findLastParticles();
-    raiseIfAny(comm_, problem.str());
+    std::string problem;
+    if (n != lastTags_.size()) problem = forceCountProblem(n, lastTags_.size());
+    for (std::size_t k = 0; problem.empty() && k < n; ++k)
+        if (!allFinite3(xyz + 3 * k)) problem = nonFiniteForceProblem(lastTags_[k], xyz + 3 * k);
+    if (problem.empty()) problem = findLastParticles();
+    raiseIfAny(comm_, problem);
     for (std::size_t k = 0; k < n; ++k) storeForce(localIndex(k), xyz + 3 * k);
 }
 
@@ -240,18 +253,14 @@ void LiggghtsDriver::beginFluidForces() {
 
 void LiggghtsDriver::setFluidForce(std::size_t k, const double* f) {
     ++forcesSet_;
-    if (k >= lastTags_.size() || !(std::isfinite(f[0]) && std::isfinite(f[1]) && std::isfinite(f[2])) ||
-        !forceProblem_.empty()) {
-        if (forceProblem_.empty()) {
+    if (k >= lastTags_.size() || !allFinite3(f) || !forceProblem_.empty()) {
+        if (forceProblem_.empty() && k >= lastTags_.size()) {
             std::ostringstream problem;
-            problem.precision(10);
-            if (k >= lastTags_.size())
-                problem << "setFluidForce: particle index " << k << " given for the "
-                        << lastTags_.size() << " particles of the last getParticles() call on this rank";
-            else
-                problem << "setFluidForces: fluid force on particle " << lastTags_[k] << " is (" << f[0] << ' '
-                        << f[1] << ' ' << f[2] << ") N, expected finite values";
+            problem << "setFluidForce: particle index " << k << " given for the "
+                    << lastTags_.size() << " particles of the last getParticles() call on this rank";
             forceProblem_ = problem.str();
+        } else if (forceProblem_.empty()) {
+            forceProblem_ = nonFiniteForceProblem(lastTags_[k], f);
         }
         return;
     }
@@ -259,12 +268,8 @@ void LiggghtsDriver::setFluidForce(std::size_t k, const double* f) {
 }
 
 void LiggghtsDriver::endFluidForces() {
-    if (forceProblem_.empty() && forcesSet_ != lastTags_.size()) {
-        std::ostringstream problem;
-        problem << "setFluidForces: " << forcesSet_ << " forces given for " << lastTags_.size()
-                << " particles of the last getParticles() call on this rank";
-        forceProblem_ = problem.str();
-    }
+    if (forceProblem_.empty() && forcesSet_ != lastTags_.size())
+        forceProblem_ = forceCountProblem(forcesSet_, lastTags_.size());
     std::string problem;
     std::swap(problem, forceProblem_);
     raiseIfAny(comm_, problem);
