@@ -28,8 +28,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Can this process create/overwrite `path` the way LIGGGHTS' fopen(path,"w")
-// will? ("a" does not truncate an existing file.)
 // granair reads per-particle radius and mass: the granular (sphere) style.
 void requireSpheres(const LAMMPS_NS::Atom& atom) {
     if (!atom.radius || !atom.rmass)
@@ -44,6 +42,8 @@ struct NeighborInternals : LAMMPS_NS::Neighbor {
     static double binSize(const LAMMPS_NS::Neighbor& n) { return n.*(&NeighborInternals::binsize_user); }
 };
 
+// Can this process create/overwrite `path` the way LIGGGHTS' fopen(path,"w")
+// will? ("a" does not truncate an existing file.)
 bool writable(const std::string& path) {
     std::FILE* f = std::fopen(path.c_str(), "a");
     if (!f) return false;
