@@ -232,7 +232,8 @@ def summary(a, runs, c):
         print(fh.read(), end="")
 
 
-def main():
+def parser():
+    """The command line (twofluid.py takes its defaults for the numbers it shares)."""
     ap = gc.cli.parser(__doc__)
     ap.add_argument("--b", type=int, action="append", choices=[5, 10, 15], help="slot width [mm]; repeat (default all)")
     ap.add_argument("--air", choices=["on", "off", "both"], default=None, help="default both")
@@ -261,6 +262,11 @@ def main():
     ap.add_argument("--eta-min", type=float, default=None,
                     help="muI: the viscosity floor [Pa s] (default rho_p d sqrt(g d) of the block's d)")
     gc.dilatancy.options(ap, P.DILATANCY_RATE, P.DILATANCY_RELAXATION)
+    return ap
+
+
+def main():
+    ap = parser()
     a = gc.cli.parse(ap, lambda a: os.path.join(HERE, "continuum-results" + ("-latz" if a.rheology == "latzSchmidt" else
                                                                              "-calibrated" if a.rheology_from == "calibration" else "")))
     if a.rheology_from == "calibration" and a.rheology != "muI":

@@ -35,7 +35,6 @@ in OUT with the DEM-CFD demo's and study's rates.
 """
 import os
 import re
-import types
 
 import numpy as np
 
@@ -49,10 +48,10 @@ SERIES_BLOCK = 1e-3     # [s] timeseries.csv's block means
 
 
 def numbers(a, b_mm, air):
-    c = types.SimpleNamespace(fills="demo", rheology_from="literature", freefall=None, rheology="muI",
-                              mesh=a.mesh, end=a.end, walls="coulomb", wall_friction=P.WALL_FRICTION,
-                              write_every=a.chunk, rheology_d=None, dem_size="demo", eta_min=None,
-                              dilatancy=False)
+    # the continuum level's defaults (its fill, literature mu(I), Coulomb walls, free
+    # fall), so an option it gains has its default here too
+    c = continuum.parser().parse_args([])
+    c.mesh, c.end, c.write_every = a.mesh, a.end, a.chunk
     v = continuum.numbers(c, b_mm, air)
     phi = v["RHO_B"] / P.RHO_P
     dx = b_mm * 1e-3 / a.mesh
