@@ -110,6 +110,8 @@ def read_level(path):
 
 
 def read_series(level):
+    if level["timeseries"] is None:     # a level that is a fit or an extrapolation, not a run
+        return None
     path = os.path.join(level["_dir"], level["timeseries"])
     if not os.path.exists(path):
         raise CompareError(f"{level['_path']}: key 'timeseries' names {path}, which does not exist")

@@ -6,7 +6,7 @@ fidelity").
     continuum.py [--b MM ...] [--air on|off|both] [--out DIR] [--quick] [--check] [--end T]
                  [--mesh N] [--walls coulomb|slip|noSlip] [--wall-friction MU] [--freefall L]
                  [--rheology muI|latzSchmidt] [--rheology-from literature|calibration]
-                 [--dem-size demo|study] [--rheology-d D] [--write-every T] [--setup-only]
+                 [--dem-size demo|study|converged] [--rheology-d D] [--write-every T] [--setup-only]
                  [--fills demo|study] [--until F] [--eta-min V]
                  [--dilatancy [--dilatancy-rate K] [--dilatancy-relaxation W]]
 
@@ -30,7 +30,10 @@ gc.calibration), in place of the literature block (the default: the
 shear-test mu_s of the real lactose, Jop et al.'s span and I0; the material
 prediction); bulk density rho_p phi_max, d the parcel diameter of the DEM
 run of --dem-size (demo: b/6, study: b/7, the calibrated parcels) and that
-run's rate the reference (reference-demo/ or reference-study-b<b>/). The
+run's rate the reference (reference-demo/ or reference-study-b<b>/); with
+--dem-size converged the reference is the DEM-only rate converged in parcel
+size (reference-parcel-size/parcel_size.json, b = 10 mm dry) and d the
+primary number mean it was extrapolated to (218 um). The
 cross-validation of README "Cross-validation"; --write-every writes the
 fields at that interval as well (the profiles against the DEM's CG fields).
 --dilatancy feeds the rheology's phi(I) back into the powder's volume
@@ -75,16 +78,29 @@ def walls_text(v):
             "noSlip": "no-slip"}[v["WALLS"]]
 
 
-def dem_reference(a, b_mm):
-    """The folder of the DEM-CFD runs the continuum is compared with: the demo's, or with
-    --dem-size study the study-size run of this b."""
-    return os.path.join(HERE, "reference-demo" if a.dem_size == "demo" else f"reference-study-b{b_mm}")
+CONVERGED = os.path.join(HERE, "reference-parcel-size", "parcel_size.json")
+
+
+def dem_rates(a, b_mm):
+    """{(b_mm, air): (W, outlet dp/dz)} of the DEM(-CFD) runs the continuum is compared
+    with: the demo's, with --dem-size study the study-size run of this b, with
+    --dem-size converged the DEM-only rate converged in parcel size and extrapolated to
+    the primary d (parcel_size.py; b = 10 mm, dry only: no dp/dz)."""
+    if a.dem_size == "converged":
+        with open(CONVERGED) as fh:
+            return {(10, False): (json.load(fh)["dem_size_converged_kg_s"], math.nan)}
+    folder = os.path.join(HERE, "reference-demo" if a.dem_size == "demo" else f"reference-study-b{b_mm}")
+    with open(os.path.join(folder, "summary.csv")) as fh:
+        return {(int(x["b_mm"]), x["air"] == "1"): (float(x["W_kg_s"]), float(x["outlet_dpdz_Pa_m"]))
+                for x in csv.DictReader(fh)}
 
 
 def calibrated(a, b_mm):
     """(parcel diameter [m], the DEM fit) of --rheology-from calibration: the diameter
-    b / b_over_d of the --dem-size DEM run's parcels."""
-    d = a.rheology_d or b_mm * 1e-3 / P.SIZES[a.dem_size]["per_b"][b_mm]["b_over_d"]
+    b / b_over_d of the --dem-size DEM run's parcels; with --dem-size converged the
+    primary number-mean d the DEM was extrapolated to."""
+    d = a.rheology_d or (P.psd_moments()[0] if a.dem_size == "converged" else
+                         b_mm * 1e-3 / P.SIZES[a.dem_size]["per_b"][b_mm]["b_over_d"])
     f = gc.calibration.fit(P.CALIBRATION)
     return d, f
 
@@ -169,7 +185,8 @@ def post(a, run, out, name, v, cells, wall):
     t1 = float(t[half[0]]) if half.size else float(t[-1])
     t0 = min(P.STEADY_FROM, 0.5 * t1)
     rheology = ("Latz-Schmidt (lactose calibration of case A)" if latz_run else
-                f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}mu(I) (mu_s {v['MU_S']:.3f}, mu_2 {v['MU_2']:.3f}, I0 {v['JOP_I0']:g})")
+                f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}mu(I) (mu_s {v['MU_S']:.3f}, mu_2 {v['MU_2']:.3f}, I0 {v['JOP_I0']:g}, "
+                f"d = {v['D_LACTOSE'] * 1e6:.0f} um in I{', dilatancy phi(I)' if a.dilatancy else ''})")
     packing = "the closure's c" if latz_run else f"phi(I) (span {v['PHI_MAX'] - v['PHI_MIN']:.3g})"
     model = (f"{rheology}, VOF, {walls_text(v)} walls, "
              f"{'Darcy-Ergun air, packing relaxing to ' + packing if air else 'no air'}, plane mesh N = {v['N']} "
@@ -207,9 +224,7 @@ def post(a, run, out, name, v, cells, wall):
 def summary(a, runs, c):
     dem = {}
     for b in sorted({x["b_mm"] for x in runs}):
-        with open(os.path.join(dem_reference(a, b), "summary.csv")) as fh:
-            dem.update({(int(x["b_mm"]), x["air"] == "1"): (float(x["W_kg_s"]), float(x["outlet_dpdz_Pa_m"]))
-                        for x in csv.DictReader(fh)})
+        dem.update(dem_rates(a, b))
     w_range, w_why = ((P.CALIBRATED_W_OVER_DEM, "issue 16's cross-validation target: the same material, within 15 %")
                       if a.rheology_from == "calibration" else
                       (P.CONTINUUM_W_OVER_DEM, "the continuum has no k d term: the committed runs give 1.40-1.87 (README)"))
@@ -223,7 +238,8 @@ def summary(a, runs, c):
                          dpdz_demo_dem_cfd_Pa_m=f"{pd:.5g}" if x["air"] else "", wall_time_s=f"{x['wall']:.0f}"))
         n = x["name"]
         gc.powder.check_continuum(c, n, x["r"])
-        c.within(f"{n}: steady rate / the DEM-CFD {a.dem_size} run's", x["W"] / wd, *w_range, w_why)
+        against = "the size-converged DEM's" if a.dem_size == "converged" else f"the DEM-CFD {a.dem_size} run's"
+        c.within(f"{n}: steady rate / {against}", x["W"] / wd, *w_range, w_why)
         if x["air"]:
             c.within(f"{n}: outlet dp/dz / the DEM-CFD demo's", x["dpdz"] / pd, *P.CONTINUUM_DPDZ_OVER_DEM,
                      "the committed runs give 0.57-1.04: the same suction to within the DEM's own scatter")
@@ -254,8 +270,9 @@ def parser():
     ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
                     help="muI parameters: the lactose's shear test with Jop et al.'s span and I0 (default) or "
                          "the DEM calibration of the DEM's parcels (cases/rheology-calibration)")
-    ap.add_argument("--dem-size", choices=sorted(P.SIZES), default="demo",
-                    help="the DEM-CFD run compared with (and, with the calibration, its parcel d): default demo")
+    ap.add_argument("--dem-size", choices=sorted(P.SIZES) + ["converged"], default="demo",
+                    help="the DEM-CFD run compared with (and, with the calibration, its parcel d): default demo; "
+                         "converged: the DEM-only rate converged in parcel size (b = 10 mm, dry; d the primary mean)")
     ap.add_argument("--rheology-d", type=float, default=None,
                     help="with the calibration: the grain diameter of I [m] instead of the DEM parcel's (sensitivity)")
     ap.add_argument("--write-every", type=float, default=None, help="field output interval [s] (default: the end)")
@@ -280,6 +297,9 @@ def main():
     gc.dilatancy.check(ap, a, P.DILATANCY_RATE, P.DILATANCY_RELAXATION)
     if a.write_every is not None and not a.write_every > 0:
         ap.error(f"--write-every {a.write_every:g}: expected an interval > 0 [s]")
+    if a.dem_size == "converged" and (set(a.b or [5, 10, 15]) != {10} or a.air != "off"):
+        ap.error("--dem-size converged: the size-converged DEM rate is of b = 10 mm without air "
+                 f"({os.path.relpath(CONVERGED, HERE)}): give --b 10 --air off")
     if a.quick:
         a.mesh, a.end, a.b, a.air = 8, 0.3, a.b or [10], a.air or "on"
     if a.mesh < 4:

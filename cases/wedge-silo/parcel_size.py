@@ -22,7 +22,8 @@ The calibrated continuum (`continuum.py --rheology-from calibration --dem-size d
 --air off`, N = 12) at the grain size its I uses (reference-continuum-calibrated-demo/
 itself: the demo parcels, 1.67 mm; d<um>um/: `--rheology-d`) against the size-converged DEM.
 
-Writes reference-parcel-size/parcel_size.{json,csv,png}.
+Writes reference-parcel-size/parcel_size.{json,csv,png} and converged/level.json (the
+extrapolated rate as a cg-dem level of `./granair compare`, without a time series).
 
     parcel_size.py [--out DIR]
 """
@@ -72,6 +73,10 @@ def dem_runs(pattern="s[0-9]*"):
                         rho_b=float(row["rho_b_kg_m3"]), parcels=int(row["inserted"]), cpu=cpu,
                         folder=os.path.relpath(folder, HERE)))
     return out
+
+
+def sizes_text(runs):
+    return ", ".join(f"{r['s']:.3g}" for r in sorted(runs, key=lambda r: r["s"]))
 
 
 def continuum_runs():
@@ -141,6 +146,15 @@ def main():
                                settled_bulk_density_kg_m3=f"{r['rho_b']:.1f}", parcels=r["parcels"],
                                cpu_s=f"{r['cpu']:.0f}") for r in runs])
     plot(runs, size, cont, bev, d0, seeds, os.path.join(a.out, "parcel_size.png"))
+    # the extrapolation as a level of `./granair compare` (no time series: it is a fit, not a run)
+    os.makedirs(os.path.join(a.out, "converged"), exist_ok=True)
+    gc.levels.write(os.path.join(a.out, "converged", "level.json"), case="wedge-silo", level="cg-dem",
+                    model=f"cg-DEM converged in parcel size: Hagen-Beverloo size fit over s = {sizes_text(runs)}, "
+                          f"extrapolated to d = {d0 * 1e6:.0f} um (+- {w_ext_se:.4f} kg/s)",
+                    b_mm=B_MM, air=False, steady_mass_flow_kg_s=w_ext, steady_window_s=runs[0]["window_s"],
+                    outlet_dpdz_Pa_m=None, wall_time_s=None, cores=1, timeseries=None,
+                    steady_mass_flow_se_kg_s=w_ext_se, cpu_s=sum(r["cpu"] for r in runs),
+                    source="parcel_size.py, ../parcel_size.json")
     resid, sizes = (", ".join(f"{r[k]:{f}}" for r in runs) for k, f in (("residual_sigma", "+.2f"), ("s", ".3g")))
     print(f"wedge-silo parcel size, b = {B_MM} mm: {len(runs)} DEM runs (s = {sizes}): "
           f"k = {fit['k']:.3f} +- {fit['k_se']:.3f}, C = {fit['C']:.3f}, chi2 {fit['chi2']:.2f} on {fit['dof']} dof "
