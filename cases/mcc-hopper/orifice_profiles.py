@@ -15,7 +15,7 @@ so F_cont / F_dem = (phi ratio) x (v_m ratio). Integrals over the whole plane
 (the DEM's CG kernel spreads its stream's edge 1-2 w beyond the orifice rim;
 that mass is the stream's), phi as a mean over the orifice area pi R^2; also
 over the core r < R - k d / 2 (k of the DEM's Beverloo fit, d of the parcels:
-outside the empty annulus). Writes results/calibrated/orifice_profiles.{json,md}.
+outside the empty annulus). Writes results/calibrated/orifice_profiles.{json,md,png}.
 """
 import argparse
 import json
@@ -44,6 +44,26 @@ def split(r, phi, vz, rho_p, r_max=None):
     mass, mflux = np.trapz(2 * math.pi * x * f, x), np.trapz(2 * math.pi * x * fv, x)
     return dict(flux_kg_s=float(-rho_p * mflux), phi_mean=float(mass / (math.pi * (r_max if r_max else P.R_OUT) ** 2)),
                 v_m=float(mflux / mass))
+
+
+def plot(dem, rows, r_core, path):
+    """Solid fraction and v_z across the orifice plane, the DEM's rings and the continuum runs side by side."""
+    plt = gc.plots.pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for r in [dem] + rows:
+        x = [g["r_mm"] for g in r["rings"]]
+        style = dict(marker="o", ls="-", color="k") if r is dem else dict(ls="-")
+        axes[0].plot(x, [g["phi"] for g in r["rings"]], label=r["label"], **style)
+        axes[1].plot(x, [g["v_z"] for g in r["rings"]], label=r["label"], **style)
+    for ax, name in zip(axes, ("solid fraction", "v_z [m/s]")):
+        ax.axvline(P.R_OUT * 1e3, color="0.6", lw=0.6)
+        ax.axvline(r_core * 1e3, color="0.6", lw=0.6, ls=":")
+        ax.set_xlabel("r [mm] (orifice plane z = 0; rim solid, core limit dotted)")
+        ax.set_ylabel(name)
+    axes[0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def main():
@@ -90,6 +110,7 @@ def main():
             o = p.get("over_dem")
             lines.append(f"| {r['label']} | {name} | {p['flux_kg_s']:.4f} | {p['phi_mean']:.3f} | {p['v_m']:.3f} | "
                          + (f"{o['flux']:.2f} | {o['phi']:.2f} | {o['v_m']:.2f} |" if o else "— | — | — |"))
+    plot(dem, rows, r_core, os.path.join(a.out, "orifice_profiles.png"))
     with open(os.path.join(a.out, "orifice_profiles.md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
     print("\n".join(lines))
