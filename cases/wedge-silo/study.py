@@ -7,7 +7,8 @@ tables, field pictures and VTK files, the study plots and the checks.
     study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR] [--jobs 2] [--np 1]
              [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
              [--rolling MU_R [--rolling-model epsd2|cdt]]
-             [--fill-height H] [--cg-every T] [--whole [--chunk T]] [--stage all|fill|runs|post] [--setup-only] [--check]
+             [--fill-height H] [--cg-every T] [--whole [--chunk T]] [--pack DIR] [--stage all|fill|runs|post]
+             [--setup-only] [--check]
 
 Fills and runs are independent serial jobs, --jobs of them at a time (on a
 shared machine this beats one 2-rank job: the thin periodic slice gives every
@@ -16,7 +17,11 @@ rank as many ghost particles as it owns); --np N runs each discharge on N ranks.
 --whole runs each discharge until the silo is empty or the flow has stopped
 (parameters.py WHOLE_*, --t-end the limit, default 15 s), granairFoam a chunk
 at a time from its restart points (gc.chunks): a stopped or killed study
-resumes where it was, a finished run is skipped. Every run's time series
+resumes where it was, a finished run is skipped. --pack DIR keeps each fill
+and run as one file in DIR (gc.chunks.pack: the newest restart point only),
+so a run outlives the machine: the same command elsewhere unpacks what its
+work folder lacks and goes on (README, "Study size over the whole
+discharge"). Every run's time series
 carries the fill level (the bed height above the orifice holding the powder
 left at the fill's bulk density); fill_level.png puts the mass flow, the
 outlet gradient and the pressure about b above against it.
@@ -144,14 +149,38 @@ def write_fill(v, d):
     hopper_walls(v, d)
 
 
+def packed(a, d, name):
+    """--pack: the folder d from a.pack/<name>.tar.xz when d has no state of its own
+    (no fill restart; no finished chunk) and the pack exists; True if it did."""
+    path = os.path.join(a.pack or "", f"{name}.tar.xz")
+    own = os.path.exists(os.path.join(d, "dem", "fill.restart")) or gc.chunks.record(d)["chunks"]
+    if not a.pack or a.setup_only or own or not os.path.exists(path):
+        return False
+    shutil.rmtree(d, ignore_errors=True)
+    gc.chunks.unpack(path, d)
+    print(f"wedge-silo: {name} unpacked from {path}", flush=True)
+    return True
+
+
+def pack(a, d, name):
+    """--pack: d as a.pack/<name>.tar.xz (a fill without its initial packing, which only a new fill needs)."""
+    path = os.path.join(a.pack, f"{name}.tar.xz")
+    size = gc.chunks.pack(d, path, skip=[os.path.join("dem", "packing.data")])
+    print(f"wedge-silo: {name} packed to {path} ({size / 1e6:.1f} MB)", flush=True)
+
+
 def do_fill(a, b, work):
     d = os.path.join(work, f"b{b}", "fill")
+    if packed(a, d, f"b{b}_fill"):
+        return {}
     shutil.rmtree(d, ignore_errors=True)
     write_fill(numbers(a, b, False), d)
     if a.setup_only:
         return {}
     t0 = time.time()
     cpu = gc.runner.liggghts(d, "dem/in.fill", "fill", "log/log.liggghts", "log/screen.liggghts", np=a.fill_np)
+    if a.pack:
+        pack(a, d, f"b{b}_fill")
     return dict(cpu_s=cpu, wall_s=time.time() - t0)
 
 
@@ -174,6 +203,9 @@ def finished(d):
 def do_run(a, b, air, work):
     name, d = f"b{b}_{'air' if air else 'noair'}", os.path.join(work, f"b{b}", "air" if air else "noair")
     v = numbers(a, b, air)
+    packed(a, os.path.join(work, f"b{b}", "fill"), f"b{b}_fill")
+    if a.whole:
+        packed(a, d, name)
     resume = a.whole and not a.setup_only and gc.chunks.record(d)["chunks"]
     if resume:
         gc.template.check_values(os.path.join(d, "case.json"), v)
@@ -193,7 +225,8 @@ def do_run(a, b, air, work):
         every = v["WRITE_INTERVAL"]
         chunk = every * max(1, math.ceil(a.chunk / every - 1e-9))
         rec = gc.chunks.foam(d, chunk, finished, v["T_END"], np=a.np,
-                             progress=lambda m: print(f"wedge-silo: {m}", flush=True))
+                             progress=lambda m: print(f"wedge-silo: {m}", flush=True),
+                             after=(lambda rec: pack(a, d, name)) if a.pack else None)
         print(f"wedge-silo: {name} finished ({rec['reason']}), {rec['cpu_s']:.0f} s CPU in "
               f"{len(rec['chunks'])} chunk(s)", flush=True)
         cpu = rec["cpu_s"]
@@ -517,9 +550,13 @@ def main():
                     help="until the silo is empty or the flow stops, in resumable chunks (--t-end: the limit)")
     ap.add_argument("--chunk", type=float, default=P.WHOLE_CHUNK,
                     help="--whole: granairFoam runs this long at a time [s], whole field intervals (default %(default)g)")
+    ap.add_argument("--pack", default=None, metavar="DIR",
+                    help="keep each fill and --whole run as DIR/b<b>_<fill|air|noair>.tar.xz, written after the fill "
+                         "and after every chunk; a fill or run with no folder here is unpacked from DIR first")
     ap.add_argument("--stage", default="all", choices=["all", "fill", "runs", "post"],
                     help="fill: the fills only; runs: the runs from existing fills, then post; post: post only")
     a = gc.cli.parse(ap, os.path.join(HERE, "run"))
+    a.pack = a.pack and os.path.abspath(a.pack)
     work, res = os.path.join(a.out, "runs"), os.path.join(a.out, "results")
     os.makedirs(work, exist_ok=True)
     os.makedirs(res, exist_ok=True)

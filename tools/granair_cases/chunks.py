@@ -12,6 +12,9 @@ one resumable loop for either program (docs/cases.md, "Long runs").
                                     stand-alone LIGGGHTS as segments, each from the previous
                                     one's write_restart (segments: a list, or a function)
     latest_restart(case)            granairFoam's newest complete restart point
+    pack(case, path, skip) / unpack(path, case)
+                                    a run's resumable state as one .tar.xz (a run folder is
+                                    lost with the machine; the pack is committed) and back
 
 The record is written after every chunk, so a stopped or killed run loses at
 most the chunk in hand: the next call goes on after the last finished one.
@@ -39,6 +42,7 @@ import json
 import math
 import os
 import shutil
+import tarfile
 import time
 
 from . import CaseError, foam as _foam, runner
@@ -71,13 +75,15 @@ def cost(case, name="chunks"):
     return (sum(c["cpu_s"] for c in chunks), sum(c["wall_s"] for c in chunks), len(chunks))
 
 
-def loop(case, step, name="chunks"):
+def loop(case, step, name="chunks", after=None):
     """Run chunks until step says the run is finished. step(rec) runs the next
     chunk of the run recorded in rec and returns its entry (a dict with cpu_s
     and whatever the case keeps: times, counts; 'reason' in it ends the run
     after this chunk), or a string: the run is finished (nothing run). The wall
     time is added to the entry and rec saved after each chunk. Returns rec with
-    cpu_s (all chunks, this call and earlier ones) and ran (chunks run now)."""
+    cpu_s (all chunks, this call and earlier ones) and ran (chunks run now).
+    after(rec), if given, is called once rec is saved after each chunk (nothing
+    runs then: e.g. pack the folder)."""
     rec = record(case, name)
     ran = 0
     while True:
@@ -92,6 +98,8 @@ def loop(case, step, name="chunks"):
         rec["reason"] = why
         ran += 1
         _save(case, rec, name)
+        if after:
+            after(rec)
         if why:
             break
     rec["cpu_s"] = sum(c["cpu_s"] for c in rec["chunks"])
@@ -131,13 +139,13 @@ def latest_restart(case):
     return times[-1] if times else None
 
 
-def foam(case, chunk, finished, t_max, np=1, progress=_say):
+def foam(case, chunk, finished, t_max, np=1, progress=_say, after=None):
     """granairFoam in case (meshed, controlDict with startFrom/startTime/endTime)
     chunk [s] at a time until finished(case) gives a reason (a string) or the time
     reaches t_max; chunk must be a whole number of field write intervals (a chunk
     ends on a restart point). A run stopped at an earlier t_max goes on to a later
     one. Returns the record (log/chunks.json): chunks [{from, to, cpu_s, wall_s}],
-    cpu_s, reason, t_end."""
+    cpu_s, reason, t_end. after: as for loop()."""
     control = os.path.join(case, "system", "controlDict")
     label = f"{os.path.basename(os.path.dirname(case))}/{os.path.basename(case)}"
 
@@ -176,7 +184,49 @@ def foam(case, chunk, finished, t_max, np=1, progress=_say):
             entry["reason"], rec["t_end"] = why, got[0]
         return entry
 
-    return loop(case, step, "chunks")
+    return loop(case, step, "chunks", after)
+
+
+# ---- packs ----
+
+def pack(case, path, skip=()):
+    """case's folder as one xz-compressed tar at path (replaced only once complete),
+    without granairFoam's restart points but the newest complete one (it holds
+    the whole DEM state; the fields, the time series and log/chunks.json are in
+    the folder) and without the paths in skip (relative to case). Take it when
+    nothing runs in case (loop's after, or a finished fill). Returns its size [B]."""
+    newest = latest_restart(case)
+    rdir = os.path.join(case, "restart")
+    drop = {os.path.join("restart", n) for n in (os.listdir(rdir) if os.path.isdir(rdir) else [])
+            if not newest or n != newest[1]} | {os.path.normpath(x) for x in skip}
+    root = os.path.basename(os.path.normpath(case))
+
+    def keep(info):
+        rel = os.path.normpath(os.path.relpath(info.name, root))
+        return None if rel in drop else info
+
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with tarfile.open(path + ".part", "w:xz") as tar:
+        tar.add(case, arcname=root, filter=keep)
+    os.replace(path + ".part", path)
+    return os.path.getsize(path)
+
+
+def unpack(path, case):
+    """A pack(...) file back as the folder case (which must not exist yet: a
+    folder with state of its own is never overwritten)."""
+    if os.path.exists(case):
+        raise CaseError(f"{case}: exists; not unpacking {path} over it (remove it to resume from the pack)")
+    parent = os.path.dirname(os.path.abspath(case))
+    tmp = os.path.join(parent, ".unpack-" + os.path.basename(case))
+    shutil.rmtree(tmp, ignore_errors=True)
+    with tarfile.open(path) as tar:
+        roots = {m.name.split("/")[0] for m in tar.getmembers()}
+        if len(roots) != 1 or any(m.name.startswith("/") or ".." in m.name.split("/") for m in tar.getmembers()):
+            raise CaseError(f"{path}: expected one folder of relative paths (a pack of gc.chunks.pack)")
+        tar.extractall(tmp, **({"filter": "data"} if hasattr(tarfile, "data_filter") else {}))
+    os.replace(os.path.join(tmp, roots.pop()), case)
+    os.rmdir(tmp)
 
 
 # ---- LIGGGHTS ----
