@@ -294,6 +294,11 @@ void CoupledRun::printSummary() const
         Info<< ", drag " << settings_.drag->name().c_str()
             << ", void fraction " << settings_.voidFraction->name().c_str()
             << ", coarse graining s = " << settings_.coarseGrainingFactor;
+        if (!settings_.forcesApplied)
+        {
+            Info<< nl << "  fluid forces computed but NOT applied (forces { applied off; }:"
+                << " the DEM runs the air-off problem; a benchmark reference)";
+        }
     }
     Info<< nl << "  " << nSteps_ << " coupling steps from t = " << tStart_ << " s to "
         << runTime_.endTime().value() << " s" << nl;
@@ -410,11 +415,18 @@ void CoupledRun::forcesToDem()
             reinterpret_cast<const double*>(gradP.primitiveField().cdata())
         );
         ::granair::dem::LiggghtsDriver& dem = *dem_;
+        // `forces { applied off; }` (benchmarking): the same work, zeros
+        // stored, so the DEM runs the `air off` problem (bench/README.md).
+        static const double zero[3] = {0, 0, 0};
+        const bool applied = settings_.forcesApplied;
         exchange_->backwardFill
         (
             3,
             [&force](std::size_t k, double* f) { force(k, f); },
-            [&dem](std::size_t i, const double* f) { dem.setFluidForce(i, f); }
+            [&dem, applied](std::size_t i, const double* f)
+            {
+                dem.setFluidForce(i, applied ? f : zero);
+            }
         );
     }
     {

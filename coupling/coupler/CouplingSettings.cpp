@@ -24,6 +24,7 @@ CouplingSettings CouplingSettings::read(const Dictionary& dict) {
         s.dragForce = f.getBool("drag", true);
         s.pressureGradientForce = f.getBool("pressureGradient", true);
         s.buoyancyForce = f.getBool("buoyancy", true);
+        s.forcesApplied = f.getBool("applied", true);
     }
     // Required with the air on. With the air off (a DEM-only run of the same
     // case) the drag law is not used but still checked when given, and the

@@ -9,7 +9,9 @@
 //   coarseGrainingFactor 1;          // parcel = s^3 primary particles, s >= 1
 //   voidFractionFloor   0.3;         // eps is floored here (hits are counted)
 //   gravity             (0 0 -9.81); // [m/s2], for the particles' buoyancy
-//   forces { drag on; pressureGradient on; buoyancy on; }
+//   forces { drag on; pressureGradient on; buoyancy on; applied on; }
+//                                    // applied off (benchmarking): every force is
+//                                    // computed and sent, LIGGGHTS is given 0
 //   drag         { type ErgunGidaspow; ... }   // coupling/drag registry
 //   voidFraction { type centre; ... }          // coupling/voidfraction registry
 // drag and voidFraction are required with the air on; with it off they are
@@ -33,6 +35,11 @@ struct CouplingSettings {
     bool dragForce = true;
     bool pressureGradientForce = true;
     bool buoyancyForce = true;
+    // false (`forces { applied off; }`): the fluid forces are computed, sent
+    // back and written into LIGGGHTS' force store as zeros, so the DEM
+    // integrates the same problem as `air off` while the coupling does all of
+    // its work: the fair reference for the coupling's overhead (bench/README.md).
+    bool forcesApplied = true;
     std::shared_ptr<const DragLaw> drag;
     std::shared_ptr<const VoidFractionModel> voidFraction;
 

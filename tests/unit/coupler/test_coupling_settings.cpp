@@ -22,6 +22,16 @@ TEST_CASE("coupling settings read the case dictionary", "[coupler]") {
     CHECK_FALSE(s.buoyancyForce);
     CHECK(s.pressureGradientForce);
     CHECK_FALSE(s.oneWay);
+    CHECK(s.forcesApplied);
+}
+
+TEST_CASE("forces are applied by default, computed only with applied off", "[coupler]") {
+    const std::string base = "couplingInterval 5; drag { type ErgunGidaspow; } voidFraction { type centre; } ";
+    const auto off = CouplingSettings::read(Dictionary::fromString(base + "forces { applied off; }", "cp"));
+    CHECK_FALSE(off.forcesApplied);
+    CHECK(off.dragForce);  // the forces themselves are still computed
+    CHECK_THROWS_WITH(CouplingSettings::read(Dictionary::fromString(base + "forces { applied maybe; }", "cp")),
+                      Contains("cp") && Contains("applied"));
 }
 
 TEST_CASE("momentum coupling is two-way by default, one-way on request", "[coupler]") {
