@@ -75,10 +75,6 @@ def dem_runs(pattern="s[0-9]*"):
     return out
 
 
-def sizes_text(runs):
-    return ", ".join(f"{r['s']:.3g}" for r in sorted(runs, key=lambda r: r["s"]))
-
-
 def continuum_runs():
     """The calibrated continuum at b = 10 mm, dry, N = 12, the demo's fill: [{d, W, folder}];
     d the grain size in I (the run's silo.json, else the folder's name d<um>um, else the
@@ -146,16 +142,16 @@ def main():
                                settled_bulk_density_kg_m3=f"{r['rho_b']:.1f}", parcels=r["parcels"],
                                cpu_s=f"{r['cpu']:.0f}") for r in runs])
     plot(runs, size, cont, bev, d0, seeds, os.path.join(a.out, "parcel_size.png"))
+    resid, sizes = (", ".join(f"{r[k]:{f}}" for r in runs) for k, f in (("residual_sigma", "+.2f"), ("s", ".3g")))
     # the extrapolation as a level of `./granair compare` (no time series: it is a fit, not a run)
     os.makedirs(os.path.join(a.out, "converged"), exist_ok=True)
     gc.levels.write(os.path.join(a.out, "converged", "level.json"), case="wedge-silo", level="cg-dem",
-                    model=f"cg-DEM converged in parcel size: Hagen-Beverloo size fit over s = {sizes_text(runs)}, "
+                    model=f"cg-DEM converged in parcel size: Hagen-Beverloo size fit over s = {sizes}, "
                           f"extrapolated to d = {d0 * 1e6:.0f} um (+- {w_ext_se:.4f} kg/s)",
                     b_mm=B_MM, air=False, steady_mass_flow_kg_s=w_ext, steady_window_s=runs[0]["window_s"],
                     outlet_dpdz_Pa_m=None, wall_time_s=None, cores=1, timeseries=None,
                     steady_mass_flow_se_kg_s=w_ext_se, cpu_s=sum(r["cpu"] for r in runs),
                     source="parcel_size.py, ../parcel_size.json")
-    resid, sizes = (", ".join(f"{r[k]:{f}}" for r in runs) for k, f in (("residual_sigma", "+.2f"), ("s", ".3g")))
     print(f"wedge-silo parcel size, b = {B_MM} mm: {len(runs)} DEM runs (s = {sizes}): "
           f"k = {fit['k']:.3f} +- {fit['k_se']:.3f}, C = {fit['C']:.3f}, chi2 {fit['chi2']:.2f} on {fit['dof']} dof "
           f"(Birge {fit['birge']:.2f}; residuals {resid} sigma); W at d = {d0 * 1e6:.0f} um {w_ext:.4f} +- {w_ext_se:.4f} kg/s")

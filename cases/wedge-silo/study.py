@@ -152,9 +152,11 @@ def write_fill(v, d):
 def packed(a, d, name):
     """--pack: the folder d from a.pack/<name>.tar.xz when d has no state of its own
     (no fill restart; no finished chunk) and the pack exists; True if it did."""
-    path = os.path.join(a.pack or "", f"{name}.tar.xz")
+    if not a.pack or a.setup_only:
+        return False
+    path = os.path.join(a.pack, f"{name}.tar.xz")
     own = os.path.exists(os.path.join(d, "dem", "fill.restart")) or gc.chunks.record(d)["chunks"]
-    if not a.pack or a.setup_only or own or not os.path.exists(path):
+    if own or not os.path.exists(path):
         return False
     shutil.rmtree(d, ignore_errors=True)
     gc.chunks.unpack(path, d)
