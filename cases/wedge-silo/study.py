@@ -211,6 +211,8 @@ def do_run(a, b, air, work):
     resume = a.whole and not a.setup_only and gc.chunks.record(d)["chunks"]
     if resume:
         gc.template.check_values(os.path.join(d, "case.json"), v)
+        gc.template.relocate(os.path.join(HERE, "template"), d, v)   # a pack from another checkout
+        gc.template.save_values(os.path.join(d, "case.json"), v)
     else:
         shutil.rmtree(d, ignore_errors=True)
         gc.template.render(os.path.join(HERE, "template"), d, v, only=["system", "constant", "0", "dem/in.liggghts",

@@ -18,6 +18,7 @@ serve several templates).
     constants(parameters)               the upper-case numbers of a case's parameters.py as values
     save_values(path, values)           the run's numbers as JSON beside it
     check_values(path, values, hint)    a resumed run must have been set up with the same numbers
+    relocate(src, dst, values)          re-fill the files that name this checkout's folder (PLACES)
 """
 import json
 import os
@@ -27,6 +28,12 @@ import shutil
 from . import CaseError
 
 PLACEHOLDER = re.compile(r"@([A-Z][A-Z0-9_]*)(?::([^@\s]*))?@")
+
+# Values that say where this checkout is, not how the run is set up: a run
+# folder packed on one machine and resumed on another (gc.chunks) holds the
+# first one's paths, so check_values ignores them and relocate re-fills the
+# files that use them.
+PLACES = ("GRANAIR_ROOT",)
 
 
 def constants(module):
@@ -80,6 +87,26 @@ def render(src, dst, values, only=None):
     return written
 
 
+def relocate(src, dst, values):
+    """Re-fill, in the run folder dst, the files of the template folder src that
+    use a PLACES value (an include of the checkout's dem-side/ scripts, say),
+    so a folder set up elsewhere points at this checkout's files. The other
+    values must be those the folder was set up with (check_values first).
+    Returns the written paths."""
+    uses = []
+    for root, _, files in os.walk(src):
+        for name in sorted(files):
+            path = os.path.join(root, name)
+            try:
+                with open(path) as fh:
+                    keys = {m.group(1) for m in PLACEHOLDER.finditer(fh.read())}
+            except UnicodeDecodeError:
+                continue
+            if keys & set(PLACES) and os.path.exists(os.path.join(dst, os.path.relpath(path, src))):
+                uses.append(os.path.relpath(path, src))
+    return render(src, dst, values, only=uses) if uses else []
+
+
 def write(path, text):
     """Write text to path, creating its folder (generated data: packings, STL walls)."""
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
@@ -99,7 +126,7 @@ def check_values(path, values, hint="remove the folder to start again"):
     with open(path) as fh:
         old = json.load(fh)
     new = json.loads(json.dumps(values))
-    diff = [k for k in sorted(set(old) | set(new)) if old.get(k) != new.get(k)]
+    diff = [k for k in sorted(set(old) | set(new)) if old.get(k) != new.get(k) and k not in PLACES]
     if diff:
         raise CaseError(f"{os.path.dirname(path)} was set up with other numbers ("
                         f"{', '.join(f'{k}: {old.get(k)} vs {new.get(k)}' for k in diff[:4])}); {hint}")

@@ -43,6 +43,23 @@ class Template(unittest.TestCase):
             with self.assertRaisesRegex(CaseError, r"other numbers \(A: 1 vs 2, D: None vs 0\); start again"):
                 gc.template.check_values(path, dict(A=2, B=[1, 2], C="x", D=0), "start again")
 
+    def test_a_folder_set_up_in_another_checkout_resumes_here(self):
+        # A pack from another machine names that machine's checkout: the place is
+        # not a number (check_values passes) and relocate re-fills only the files
+        # that name it, with this checkout's.
+        with tempfile.TemporaryDirectory() as d:
+            write(os.path.join(d, "t", "dem", "in.liggghts"), "include @GRANAIR_ROOT@/x\nrun @N@\n")
+            write(os.path.join(d, "t", "system", "controlDict"), "endTime @N@;\n")
+            gc.template.render(os.path.join(d, "t"), os.path.join(d, "run"), dict(GRANAIR_ROOT="/elsewhere", N=3))
+            path = gc.template.save_values(os.path.join(d, "run", "case.json"), dict(GRANAIR_ROOT="/elsewhere", N=3))
+            here = dict(GRANAIR_ROOT="/here", N=3)
+            gc.template.check_values(path, here)
+            out = gc.template.relocate(os.path.join(d, "t"), os.path.join(d, "run"), here)
+            self.assertEqual(out, [os.path.join(d, "run", "dem", "in.liggghts")])
+            self.assertEqual(read(out[0]), "include /here/x\nrun 3\n")
+            with self.assertRaisesRegex(CaseError, r"N: 3 vs 4"):
+                gc.template.check_values(path, dict(GRANAIR_ROOT="/here", N=4))
+
     def test_render_copies_a_folder_or_part_of_it(self):
         with tempfile.TemporaryDirectory() as d:
             write(os.path.join(d, "t", "system", "controlDict"), "deltaT @DT:g@;\n")
