@@ -62,8 +62,7 @@ def plot(dem, rows, r_core, path):
         ax.set_ylabel(name)
     axes[0].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    gc.plots.save(fig, path, dpi=110)
 
 
 def main():
@@ -71,8 +70,10 @@ def main():
     ap.add_argument("runs", nargs="+", help="LABEL=RUN_FOLDER (a continuum run folder written with --ascii)")
     ap.add_argument("--out", default=os.path.join(HERE, "results", "calibrated"))
     a = ap.parse_args()
-    dem_n = json.load(open(os.path.join(CG, "cg_numbers.json")))
-    k = json.load(open(os.path.join(HERE, "reference-cg-dem", "parcel_size.json")))["fit"]["k"]
+    with open(os.path.join(CG, "cg_numbers.json")) as fh:
+        dem_n = json.load(fh)
+    with open(os.path.join(HERE, "reference-cg-dem", "parcel_size.json")) as fh:
+        k = json.load(fh)["fit"]["k"]
     r_core = P.R_OUT - k * D_PARCEL / 2
     t = np.genfromtxt(os.path.join(CG, "cg_orifice.csv"), delimiter=",", names=True)
     dem = dict(label="CG-DEM s = 5, 400 g", rings=[dict(r_mm=float(r * 1e3), phi=float(f), v_z=float(v), I=float(i))
