@@ -233,8 +233,9 @@ def study(a, runs, geoms, c):
     for f in a.friction:
         v = silo.numbers(a.size, f)
         fill = os.path.join(runs, f, "fill")
-        if os.path.exists(os.path.join(fill, "dem", "fill.dump")):
-            rho_b[f], _ = bulk_density(fill, v)
+        rho = fill_density(fill, v, os.path.join(a.out, f, "fill.json"))
+        if rho is not None:
+            rho_b[f] = rho
         for L in geoms:
             run_dir = os.path.join(runs, f, silo.geometry_name(L))
             if not os.path.exists(os.path.join(a.out, f, f"{silo.geometry_name(L)}.json")) and \
@@ -435,6 +436,22 @@ def plot_maps(a, f, Ls):
     gc.field_maps.draw(os.path.join(a.out, f"maps_{f}.png"),
                        f"CG fields, {f} friction (Gaussian w = d, depth averaged, 20 snapshots); white: the openings; "
                        "x, z in mm", rows, MAPS)
+
+
+def fill_density(fill, v, saved):
+    """The settled fill's bulk density: from its dump when the run folder has it
+    (and then kept in `saved`, a small file committed with the results), else
+    from `saved`, so --post-only on a checkout without the runs' dumps still
+    makes the Hagen-Beverloo rows and checks. None if neither exists."""
+    if os.path.exists(os.path.join(fill, "dem", "fill.dump")):
+        rho, top = bulk_density(fill, v)
+        gc.template.write(saved, json.dumps(dict(rho_b_kg_m3=rho, top_m=top, source="dem/fill.dump of the fill run"),
+                                            indent=1) + "\n")
+        return rho
+    if os.path.exists(saved):
+        with open(saved) as fh:
+            return json.load(fh)["rho_b_kg_m3"]
+    return None
 
 
 def levels(a, res, rho_b):
