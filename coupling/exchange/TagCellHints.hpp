@@ -58,6 +58,13 @@ public:
 
 private:
     static std::int32_t key(std::int64_t id);
+    // The key of the tag at position pos of lastIds_, plus one: -1 sorts first, unsigned.
+    std::uint32_t ukey(std::int32_t pos) const {
+        return static_cast<std::uint32_t>(lastIds_[static_cast<std::size_t>(pos)]) + 1u;
+    }
+    // Positions [first, last) of lastIds_ into ascending tag order.
+    void sortByTag(std::int32_t* first, std::int32_t* last) const;
+    void radixPass(std::int32_t* first, std::int32_t* last, int shift) const;
     std::vector<std::int32_t> lastIds_;
     std::vector<int> lastCells_;
     std::vector<std::int32_t> byId_;  // positions in lastIds_, ascending tag

@@ -98,6 +98,38 @@ TEST_CASE("TagCellHints: a list shifted by a few places needs no tag search", "[
     CHECK(h.tagSearches() == 1);  // the new particle only
 }
 
+TEST_CASE("TagCellHints: a shuffled list of tags over several radix digits is found by tag", "[exchange]") {
+    // The tag index is sorted in place by 8-bit digits (short runs by
+    // insertion): tags spanning three digits, a random order, some gone and
+    // some new, each old one must still find its own cell.
+    std::mt19937_64 rng(11);
+    std::vector<std::int64_t> tags;
+    for (std::int64_t t = 1; tags.size() < 3000; t += 1 + static_cast<std::int64_t>(rng() % 3000)) tags.push_back(t);
+    REQUIRE(tags.back() > (1 << 16));
+    std::shuffle(tags.begin(), tags.end(), rng);
+    TagCellHints h;
+    std::vector<int> cells;
+    h.beginStep(cells);
+    cells.resize(tags.size());
+    for (std::size_t j = 0; j < tags.size(); ++j) cells[j] = static_cast<int>(7 * j + 1);
+    h.endStep(tags.size(), [&](std::size_t j) { return tags[j]; });
+    std::vector<std::pair<std::int64_t, int>> expect;
+    for (std::size_t j = 0; j < tags.size(); ++j) expect.emplace_back(tags[j], cells[j]);
+    h.beginStep(cells);
+    std::shuffle(expect.begin(), expect.end(), rng);
+    expect.resize(2500);                    // 500 gone
+    expect.emplace_back(tags.back() + 5, -1);  // new ones
+    expect.emplace_back(0, -1);
+    std::shuffle(expect.begin(), expect.end(), rng);
+    std::size_t wrong = 0, inPlace = 0;  // inPlace: by chance at their old position (no lookup elsewhere)
+    for (std::size_t j = 0; j < expect.size(); ++j) {
+        wrong += h.lastCell(j, expect[j].first) != expect[j].second;
+        inPlace += j < tags.size() && tags[j] == expect[j].first;
+    }
+    CHECK(wrong == 0);
+    CHECK(h.sortedLookups() == static_cast<std::int64_t>(2500 - inPlace));
+}
+
 TEST_CASE("exchange cell search: a re-sorted list keeps every particle's own last cell as its hint",
           "[exchange]") {
     const BoxMesh box(Vec3(0, 0, 0), Vec3(1, 1, 1), {8, 8, 8});
