@@ -11,7 +11,8 @@ b/4 runs from undefined wall values (see run_one); docs/two-fluid-model.md
 One slot width.
 
     twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--chunk T] [--resume] [--past-half] [--mesh N]
-                [--air-mu-factor F] [--shear-pressure on|off] [--out DIR] [--setup-only]
+                [--air-mu-factor F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
+                [--out DIR] [--setup-only]
 
 The silo, its fill and the mu(I) block are the continuum level's
 (continuum.py numbers(): the same mesh with its free-fall region, the DEM
@@ -73,6 +74,15 @@ def numbers(a, b_mm, air):
              # (equal cells, so their mean is the row's mean)
              SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dx - v['B']:.9g} {P.DEPTH / 2:.6g} {dx / 2:.9g})"
                                       for i in range(a.mesh)))
+    if a.shear_pressure_phi_max is not None:
+        # p_I's packing at I = 0 (MuIFrictionalStress: the rheology block's phiMax is
+        # read by p_I only, mu(I) does not use it); the span phiMax - phiMin is kept
+        phi_max = v["ALPHA_MAX"] if a.shear_pressure_phi_max == "alphaMax" else float(a.shear_pressure_phi_max)
+        span = v["PHI_MAX"] - v["PHI_MIN"]
+        for key, value in (("phiMax", phi_max), ("phiMin", phi_max - span)):
+            v["RHEOLOGY"] = gc.calibration.set_entry(v["RHEOLOGY"], key, value,
+                                                     "twofluid.py --shear-pressure-phi-max (span kept)")
+        v.update(PHI_MAX=phi_max, PHI_MIN=phi_max - span)
     return v
 
 
@@ -213,7 +223,8 @@ def post(run, out, name, v, wall=None):
     gc.levels.write(os.path.join(out, "level.json"), case="wedge-silo", level="two-fluid",
                     model=(f"two-fluid twoPhaseEulerFoam + granair muI (mu_s {v['MU_S']:.3f}) and ErgunGidaspow, "
                            f"Coulomb walls, staircase mesh b/{v['N']}, "
-                           + ("shear-induced pressure, " if v["SHEAR_PRESSURE"] == "on" else "contact pressure only, ")
+                           + (f"shear-induced pressure (phiMax {v['PHI_MAX']:.4g}), " if v["SHEAR_PRESSURE"] == "on"
+                              else "contact pressure only, ")
                            + (("air" if v["AIR_MU_FACTOR"] == 1 else f"air at {v['AIR_MU_FACTOR']:g}x viscosity (diagnostic)")
                               if air else "air at 1/100 viscosity (dry)")),
                     b_mm=v["B_MM"], air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
@@ -339,11 +350,24 @@ def main():
     # the air hardly slows it (docs/two-fluid-model.md "On a silo", measured)
     ap.add_argument("--shear-pressure", choices=["on", "off"], default="on",
                     help="the muI model's shear-induced (dilatant) pressure p_I (default on; off: the contact part only)")
+    # default: the fill's packing rho_b/rho_p (0.5843 at b = 10 mm), the continuum's
+    # phiMax; the hopper compacts above it under the contact law (alphaMax = fill + 0.04)
+    ap.add_argument("--shear-pressure-phi-max", default=None, metavar="PHI|alphaMax",
+                    help="p_I's solid fraction at I = 0 (its denominator max(PHI - alpha, delta)), phiMin "
+                         "moved with it; alphaMax: the contact pressure's alphaMax (fill + 0.04) "
+                         "(default: the rheology's phiMax, the fill's packing)")
     ap.add_argument("--air-mu-factor", type=float, default=1.0,
                     help="diagnostic: the air run's air viscosity in units of the real one (default 1)")
     a = gc.cli.parse(ap, os.path.join(HERE, "two-fluid-results"))
     if not (a.chunk > 0 and a.end > 0):
         ap.error(f"--chunk {a.chunk:g} / --end {a.end:g}: expected times > 0 [s]")
+    if a.shear_pressure_phi_max not in (None, "alphaMax"):
+        try:
+            ok = 0 < float(a.shear_pressure_phi_max) <= 1
+        except ValueError:
+            ok = False
+        if not ok:
+            ap.error(f"--shear-pressure-phi-max {a.shear_pressure_phi_max}: expected 0 < PHI <= 1 or alphaMax")
     airs = {"on": [True], "off": [False], "both": [True, False]}[a.air]
     tasks = [(f"b{b}_{'air' if x else 'noair'}", run_one, (a, b, x)) for b in (a.b or [10]) for x in airs]
     res = gc.runner.pool(tasks, 2, "wedge-silo two-fluid")

@@ -34,3 +34,15 @@ for _, t in times:
 print("\n".join(fails) if fails else "two_fluid_wedge_short: all checks passed")
 sys.exit(1 if fails else 0)
 PY
+# --shear-pressure-phi-max alphaMax: p_I's phiMax is the contact law's alphaMax, its span kept
+"$GRANAIR_PYTHON" "$tf" --b 10 --air off --shear-pressure-phi-max alphaMax --setup-only --out "$work/phimax"
+"$GRANAIR_PYTHON" - "$work/phimax/runs/b10_noair/constant/turbulenceProperties.particles" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+get = lambda k: float(re.search(r"^\s*" + k + r"\s+([0-9.eE+-]+);", text, re.M).group(1))
+amax, pmax, pmin = get("alphaMax"), get("phiMax"), get("phiMin")
+print(f"alphaMax {amax:g}, rheology phiMax {pmax:g}, phiMin {pmin:g}")
+ok = abs(pmax - amax) < 1e-5 and abs(pmax - pmin - 0.189) < 1e-5
+print("two_fluid_wedge_short: --shear-pressure-phi-max " + ("checks passed" if ok else "FAILED"))
+sys.exit(0 if ok else 1)
+PY
