@@ -70,9 +70,10 @@ void TagCellHints::sortByTag(std::int32_t* first, std::int32_t* last) const {
     // particle budget): an MSD radix sort on the key + 1 (key -1 first, as
     // std::sort put it), 8 bits at a time from the highest one any key uses,
     // and insertion sort for short runs. It replaced std::sort with an
-    // indirect compare, a quarter of the exchange's instructions on the
-    // wedge-silo demo (one sort per step after LIGGGHTS' re-sort). The keys
-    // of real tags are unique, so the order is the one std::sort gave.
+    // indirect compare (one sort per step after LIGGGHTS' re-sort): -4.2 %
+    // of ParticleExchange::forward's instructions on the wedge-silo demo
+    // (callgrind, bench/results/wedge-demo-tag-sort.md). The keys of real
+    // tags are unique, so the order is the one std::sort gave.
     std::uint32_t top = 0;
     for (const std::int32_t* q = first; q != last; ++q) top = std::max(top, ukey(*q));
     int shift = 0;
