@@ -100,20 +100,12 @@ MASS_INTEGRAL_TOL = 1e-3          # CG: int rho dV over an enclosing window vs t
 
 
 def contact_law(k_n=K_N, e=RESTITUTION, m=MASS):
-    """LIGGGHTS hooke/stiffness numbers for a linear spring-dashpot with restitution e:
-    the damped oscillator m_eff x'' + c x' + k x = 0 leaves contact at t_c = pi / omega_d
-    with velocity ratio e = exp(-beta t_c), beta = c / (2 m_eff), so
-    beta = omega_0 |ln e| / sqrt(pi^2 + ln^2 e), omega_0 = sqrt(k / m_eff); LIGGGHTS'
-    gamman (absolute_damping off) is c / m_eff = 2 beta [1/s]. Returns dict with
-    gamman for particle pairs (m_eff = m/2) and particle-wall contacts (m_eff = m),
-    the pair contact time [s] and the DEM step."""
-    ln_e = abs(math.log(e))
-    out = {}
-    for name, m_eff in (("pp", m / 2), ("pw", m)):
-        w0 = math.sqrt(k_n / m_eff)
-        beta = w0 * ln_e / math.sqrt(math.pi ** 2 + ln_e ** 2)
-        out["gamman_" + name] = 2 * beta
-        out["t_contact_" + name] = math.pi / math.sqrt(w0 ** 2 - beta ** 2)
+    """LIGGGHTS hooke/stiffness numbers for a linear spring-dashpot with restitution e
+    (gc.contact.linear_dashpot: gamman and the contact time of particle pairs, m_eff = m/2,
+    and particle-wall contacts, m_eff = m) and the DEM step: a pair's contact time /
+    STEPS_PER_CONTACT."""
+    from granair_cases import contact
+    out = contact.linear_dashpot(k_n, e, m)
     out["dt"] = out["t_contact_pp"] / STEPS_PER_CONTACT
     return out
 

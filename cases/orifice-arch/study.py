@@ -256,40 +256,6 @@ def discharge(a, variant, R_d):
 COUNTS = ("step", "atoms", "fed", "removed", "below")         # the columns of post/counts_<k>.txt
 
 
-def counts(case, n_segments):
-    """The counts of a run's segments in order: {step, atoms, fed, removed, below} (ints)."""
-    paths = [os.path.join(case, "post", f"counts_{k}.txt") for k in range(1, n_segments + 1)]
-    for k, path in enumerate(paths, 1):
-        if not os.path.exists(path):
-            raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
-    out = {k: np.rint(x).astype(int) for k, x in gc.dem.read_print(paths, COUNTS).items()}
-    # the strays each segment deleted at its start (template/dem/in.liggghts) are removed too:
-    # segment k's counts carry those of segments 1..k
-    stray = np.zeros(len(out["step"]), dtype=int)
-    for k, s0 in enumerate(segment_starts(case, n_segments), 1):
-        stray[out["step"] > s0] += strays(case, k)
-    out["stray"] = stray
-    out["removed"] = out["removed"] + stray
-    return out
-
-
-def strays(case, k):
-    """The particles segment k deleted below the sink plane at its start (its LIGGGHTS log)."""
-    path = os.path.join(case, "log", f"segment_{k}.liggghts")
-    try:
-        with open(path) as fh:
-            found = [ln for ln in fh if ln.startswith(f"granair stray {k}:")]
-    except OSError:
-        raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
-    return int(found[-1].split(":")[1].split()[0]) if found else 0
-
-
-def segment_starts(case, n_segments):
-    """The first step of each segment: the step of its restart (the previous one's last count)."""
-    return [0] + [int(gc.dem.read_print([os.path.join(case, "post", f"counts_{k}.txt")], COUNTS)["step"][-1])
-                  for k in range(1, n_segments)]
-
-
 def flow(a, variant, R_d, case):
     """Counts, accounting and flow rate of one run; writes OUT/<name>.csv, .flow.csv, .summary.txt."""
     v, g = values(a.size, variant, R_d)
@@ -297,7 +263,7 @@ def flow(a, variant, R_d, case):
     name = run_name(variant, R_d)
     fill_keys = gc.series.read_keys(os.path.join(a.out, "runs", variant, "fill", "summary.txt"))
     packed = int(fill_keys["particles_packed"])
-    c = counts(case, math.ceil(st["total"] / st["seg"]))
+    c = gc.discharge_counts.read(case, math.ceil(st["total"] / st["seg"]), COUNTS)   # strays added to removed
     t = c["step"] * v["DT"]
     discharged = c["removed"] + c["below"]
     balance = packed + c["fed"] - c["atoms"] - c["removed"]        # 0 at every count
@@ -306,25 +272,19 @@ def flow(a, variant, R_d, case):
                          ("removed", c["removed"]), ("below_floor", c["below"]), ("discharged", discharged)],
                         fmt=["{:.6g}", "{:.6g}", "{:d}", "{:d}", "{:d}", "{:d}", "{:d}"])
     # dN/dt: means over windows of 1 t_d (the change of the discharged count over each)
-    per = max(1, round(P.T_D / (st["print"] * v["DT"])))
-    edges = np.arange(0, len(t), per)
-    tw = 0.5 * (t[edges[:-1]] + t[edges[1:]])
-    rate = np.diff(discharged[edges]) / np.diff(t[edges])
+    tw, rate = gc.discharge_counts.window_rates(t, discharged, max(1, round(P.T_D / (st["print"] * v["DT"]))))
     mass_flow = rate * P.MASS
     gc.series.write_csv(os.path.join(a.out, f"{name}.flow.csv"),
                         [("t", tw), ("t_over_td", tw / P.T_D), ("rate_per_s", rate), ("mass_flow_kg_s", mass_flow)],
                         fmt="{:.6g}")
     t0 = st["avg_from"] * v["DT"]
-    steady = gc.series.slope(t, discharged.astype(float), t0)
-    sel = tw >= t0
-    se = float(np.std(rate[sel], ddof=1) / math.sqrt(sel.sum())) if sel.sum() > 1 else math.nan
+    steady, se = gc.discharge_counts.steady_rate(t, discharged, tw, rate, t0)
     rho_b = float(fill_keys["bulk_density_kg_m3"])
     gap = 2 * g["half_gap"] if variant == "slab" else None
     bev = {k: P.beverloo_rate(v["R"], rho_b, k, gap) for k in P.K_RANGE}
-    # k of Beverloo with C fixed: (W / (C rho_b sqrt(g) [L]))^(1/n) = D - k d
     n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
     w = steady * P.MASS
-    k_fit = (2 * v["R"] - (w / (P.BEVERLOO_C * rho_b * math.sqrt(P.G) * length)) ** (1 / n_exp)) / P.D
+    k_fit = gc.discharge_counts.beverloo_k(w, 2 * v["R"], P.D, rho_b, P.BEVERLOO_C, n_exp, length, P.G)
     cpu, wall, nseg = gc.chunks.cost(case, "segment")
     last = {k: int(x[-1]) for k, x in c.items()}
     in_silo = last["atoms"] - last["below"]
@@ -364,14 +324,9 @@ def flow(a, variant, R_d, case):
 def plot_flow(a, variant, results, path):
     plt = gc.plots.pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
-    t0 = steps(a.size)["avg_from"] * law()["DT"] / P.T_D
-    for i, (R_d, r) in enumerate(sorted(results.items())):
-        col = f"C{i}"
-        ax.plot(r["tw"] / P.T_D, r["rate"] * P.T_D, color=col, lw=1.2,
-                label=f"R = {R_d:g} d: {r['steady'] * P.T_D:.1f} per t_d")
-        ax.axhspan(r["bev"][3.0] * P.T_D, r["bev"][1.0] * P.T_D, color=col, alpha=0.15)
-    ax.axvline(t0, color="0.4", ls=":", lw=1)
-    ax.text(t0, ax.get_ylim()[1] * 0.97, " averaging window", fontsize=7, va="top", color="0.3")
+    gc.profile_plots.rates(ax, [(f"R = {R_d:g} d: {r['steady'] * P.T_D:.1f} per t_d", r["tw"] / P.T_D, r["rate"] * P.T_D,
+                                 (r["bev"][3.0] * P.T_D, r["bev"][1.0] * P.T_D)) for R_d, r in sorted(results.items())],
+                           steps(a.size)["avg_from"] * law()["DT"] / P.T_D)
     what = "3-D silo, circular outlet" if variant == "silo" else f"monolayer (gap {P.GAP_2D:g} d), slit 2R"
     ax.set(xlabel="t / t_d", ylabel="dN/dt  [particles per t_d]",
            title=f"orifice-arch, {what}, {a.size} size: flow rate (1 t_d means); bands: Beverloo k = 3..1, C = 0.58")
