@@ -30,6 +30,7 @@
     cg_runs     granairCG on 2-D grids: kernels, grid-aligned and enclosing windows, the kept fields, the mass record
     discharge_counts  a re-fed LIGGGHTS discharge in segments: counts with strays, window rates, the steady rate
     contact     the linear spring-dashpot's damping and contact time from a restitution coefficient
+    packing_regions  a loose packing's region: a cylinder, a box (sample and inside for dem.loose_packing)
     profile_plots  panels of a study's CG fields and rates: rates with bands, profiles at heights, maps, paraboloids
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
@@ -44,4 +45,4 @@ class CaseError(Exception):
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
-from . import arch, cg_runs, discharge_counts, contact, profile_plots  # noqa: E402,F401
+from . import arch, cg_runs, discharge_counts, contact, profile_plots, packing_regions  # noqa: E402,F401

@@ -4,7 +4,10 @@ table with the strays each segment deleted at its start counted as removed, the 
 as means over windows of whole counts, its steady value over an averaging window, and
 Beverloo's k at a fixed C (cases/orifice-arch).
 
+    segments = plan(total, seg, snap, avg_from, cg_on)   gc.chunks.liggghts' segments: nsteps, cg_every
     c = read(case, n_segments, columns)     {column: int array} of post/counts_<k>.txt, "removed" + strays
+    acc = accounting(c, packed)             the balance at every count and the end's totals
+    check_accounting(checks, name, acc)     exact at every count and at the end; fed and drained
     tw, rate = window_rates(t, n, per)     dN/dt: the change of a cumulative count over every `per` counts
     steady, se = steady_rate(t, n, tw, rate, t0)   slope from t0 on; standard error of the window means
     k = beverloo_k(W, D, d, rho_b, C, n_exp, length, g)   k of W = C rho_b sqrt(g) L (D - k d)^n
@@ -20,6 +23,18 @@ import os
 import numpy as np
 
 from . import CaseError, dem, series
+
+
+def plan(total, seg, snap, avg_from, cg_on=True):
+    """The segments of a run of `total` steps in pieces of `seg` (the last shorter):
+    [{nsteps, cg_every}], CG snapshots every `snap` steps in the segments that end after
+    `avg_from` (the averaging window; none with cg_on false), 0 in the others."""
+    out, s0 = [], 0
+    while s0 < total:
+        s1 = min(s0 + seg, total)
+        out.append(dict(nsteps=s1 - s0, cg_every=snap if cg_on and s1 > avg_from else 0))
+        s0 = s1
+    return out
 
 
 def strays(case, k, tag="granair stray"):
@@ -79,3 +94,28 @@ def beverloo_k(W, D, d, rho_b, C=0.58, n_exp=2.5, length=1.0, g=9.81):
     (circular: n = 5/2, L = 1; a slit: n = 3/2, L its length). How far a measured rate
     is from the usual k = 1..3 at the chosen C."""
     return (D - (W / (C * rho_b * math.sqrt(g) * length)) ** (1 / n_exp)) / d
+
+
+def accounting(c, packed):
+    """A re-fed run's particle accounting from read()'s counts (columns atoms, fed, removed,
+    below, stray) and the particles packed at its start: balance = packed + fed - atoms -
+    removed at every count (0: no particle made or lost), and of the last count: last
+    (each column), inserted = packed + fed, in_silo = atoms - below, discharged = removed
+    + below."""
+    last = {k: int(x[-1]) for k, x in c.items()}
+    return dict(balance=packed + c["fed"] - c["atoms"] - c["removed"], last=last, packed=packed,
+                inserted=packed + last["fed"], in_silo=last["atoms"] - last["below"],
+                discharged=last["removed"] + last["below"])
+
+
+def check_accounting(checks, name, acc):
+    """The accounting checks of one run (a gc.checks.Checks): balanced exactly at every
+    count and at the end (inserted = in the silo + below the floor + removed), and
+    particles both re-inserted and removed (the flow ran and was fed)."""
+    last = acc["last"]
+    checks.exact(f"{name}: packed + re-inserted - present - removed at every count ({len(acc['balance'])} counts)",
+                 int(np.max(np.abs(acc["balance"]))), 0, "integer counts: no particle made or lost")
+    checks.exact(f"{name}: inserted = in silo + below the floor + removed at the end",
+                 acc["inserted"], acc["in_silo"] + last["below"] + last["removed"], "integer counts")
+    checks.true(f"{name}: particles re-inserted and removed", last["fed"] > 0 and last["removed"] > 0,
+                f"{last['fed']} re-inserted, {last['removed']} removed", "the flow ran and was fed")

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""The case layer's discharge_counts and contact modules (tools/granair_cases): the counts
-of a two-segment run read from hand-made `fix print` files and logs, the strays of the
-second segment added to "removed" from its start on; the rate of a count growing
+"""The case layer's discharge_counts, packing_regions and contact modules (tools/granair_cases): the segment
+plan; the counts of a two-segment run read from hand-made `fix print` files and logs, the
+strays of the second segment added to "removed" from its start on, its accounting
+balanced (and its checks failing one particle off); a loose packing inside a cylinder
+and a box (packing_regions); the rate of a count growing
 linearly (its window means and slope exact, their error zero); Beverloo's k recovered
 from rates made with it (circular and slot); and the linear spring-dashpot's damping
 against the damped oscillator solved by steps: the restitution and the contact time."""
@@ -12,7 +14,9 @@ import tempfile
 
 import numpy as np
 
-from granair_cases import CaseError, closed_forms, contact, discharge_counts
+import random
+
+from granair_cases import CaseError, checks, closed_forms, contact, dem, discharge_counts, packing_regions
 
 failures = []
 
@@ -41,13 +45,41 @@ with tempfile.TemporaryDirectory() as case:
         failures.append(f"strays {list(c['stray'])}, removed {list(c['removed'])}")
     if list(c["atoms"]) != [100, 100, 100, 100] or c["atoms"].dtype.kind != "i":
         failures.append(f"atoms: {c['atoms']}")
-    bal = 100 + c["fed"] - c["atoms"] - c["removed"]
-    check("balance closes with the strays", int(np.max(np.abs(bal))), 0)
+    acc = discharge_counts.accounting(c, 100)
+    check("balance closes with the strays", int(np.max(np.abs(acc["balance"]))), 0)
+    check("inserted", acc["inserted"], 114)
+    check("in the silo", acc["in_silo"], 99)
+    check("discharged", acc["discharged"], 15)
+    ch = checks.Checks("unit")
+    discharge_counts.check_accounting(ch, "run", acc)
+    if len(ch.lines) != 3 or ch.failed:
+        failures.append(f"check_accounting: {ch.lines}")
+    ch = checks.Checks("unit")
+    discharge_counts.check_accounting(ch, "run", discharge_counts.accounting(c, 101))   # one particle too many
+    if [ln[:4] for ln in ch.lines] != ["FAIL", "FAIL", "PASS"]:
+        failures.append(f"check_accounting of an unbalanced run: {ch.lines}")
     try:
         discharge_counts.read(case, 3, COLS)
         failures.append("a missing segment: no CaseError")
     except CaseError:
         pass
+
+# the segments: 25 steps in pieces of 10, CG from the segments ending after step 12
+pl = discharge_counts.plan(25, 10, 5, 12)
+if pl != [dict(nsteps=10, cg_every=0), dict(nsteps=10, cg_every=5), dict(nsteps=5, cg_every=5)]:
+    failures.append(f"plan: {pl}")
+if any(x["cg_every"] for x in discharge_counts.plan(25, 10, 5, 12, cg_on=False)):
+    failures.append("plan: CG snapshots with cg_on false")
+
+# packing regions: every sphere of a loose packing inside and gap clear of the walls
+for name, (sample, inside), ok in (
+        ("cylinder", packing_regions.cylinder(0.05, 0.0002), lambda x, y, z, r: math.hypot(x, y) + r + 0.0002 <= 0.05 + 1e-12),
+        ("box", packing_regions.box(0.05, 0.0055, 0.0002), lambda x, y, z, r: abs(x) + r + 0.0002 <= 0.05 + 1e-12
+         and abs(y) + r + 0.0002 <= 0.0055 + 1e-12)):
+    atoms = dem.loose_packing([0.01] * 60, random.Random(3), sample, inside, lambda t: t + 0.01, 0.05, 0.010001, 0.0002,
+                              origin=(-0.06, -0.06, 0.0))
+    if len(atoms) != 60 or not all(ok(x, y, z, d / 2) and z >= d / 2 + 0.0002 for x, y, z, d in atoms):
+        failures.append(f"packing_regions.{name}: a sphere outside or {len(atoms)} placed")
 
 # a count growing at 7 per unit time, counted every 0.1: windows of 5 counts
 t = np.arange(0, 41) * 0.1
@@ -91,4 +123,4 @@ for kind, m_eff in (("pp", m / 2), ("pw", m)):
 if failures:
     print("\n".join(failures))
     sys.exit(1)
-print("discharge_counts, contact: all checks passed")
+print("discharge_counts, packing_regions, contact: all checks passed")
