@@ -115,23 +115,10 @@ def values(size, variant, R_d=None):
 def packing(g, seed):
     """Random sequential addition of the fill at PACKING_INSERT: [(x, y, z, d)]."""
     d, gap = g["d"], 0.02 * g["d"]
-    r = d / 2
     if g["variant"] == "silo":
-        rmax = g["R_s"] - r - gap
-
-        def sample(rng, r, top):
-            return rng.uniform(-rmax, rmax), rng.uniform(-rmax, rmax), rng.uniform(r + gap, top)
-
-        def inside(x, y, z, r):
-            return x * x + y * y <= rmax * rmax and z >= r + gap
+        sample, inside = gc.packing_regions.cylinder(g["R_s"], gap)
     else:
-        xmax, ymax = g["width"] / 2 - r - gap, g["half_gap"] - r - gap
-
-        def sample(rng, r, top):
-            return rng.uniform(-xmax, xmax), rng.uniform(-ymax, ymax), rng.uniform(r + gap, top)
-
-        def inside(x, y, z, r):
-            return abs(x) <= xmax and abs(y) <= ymax and z >= r + gap
+        sample, inside = gc.packing_regions.box(g["width"] / 2, g["half_gap"], gap)
     return gc.dem.loose_packing([d] * g["n"], random.Random(seed), sample, inside, lambda t: t + d, g["loose_top"],
                                 d * 1.0001, gap, origin=(-g["half_x"], -g["half_y"], 0.0))
 
@@ -236,11 +223,7 @@ def discharge(a, variant, R_d):
     name = run_name(variant, R_d)
     case = run_folder(a, variant, R_d)
     cg_on = R_d in P.SIZES[a.size][variant]["cg"]
-    plan, s0 = [], 0
-    while s0 < st["total"]:
-        s1 = min(s0 + st["seg"], st["total"])
-        plan.append(dict(nsteps=s1 - s0, cg_every=st["snap"] if cg_on and s1 > st["avg_from"] else 0))
-        s0 = s1
+    plan = gc.discharge_counts.plan(st["total"], st["seg"], st["snap"], st["avg_from"], cg_on)
     print(f"orifice-arch {name}: {len(plan)} segments of {st['seg']} steps ({st['seg'] * v['DT'] / P.T_D:.3g} t_d), "
           f"dt = {v['DT']:.4g} s, CG {'on' if cg_on else 'off'}", flush=True)
     rec = gc.chunks.liggghts(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
@@ -266,7 +249,8 @@ def flow(a, variant, R_d, case):
     c = gc.discharge_counts.read(case, math.ceil(st["total"] / st["seg"]), COUNTS)   # strays added to removed
     t = c["step"] * v["DT"]
     discharged = c["removed"] + c["below"]
-    balance = packed + c["fed"] - c["atoms"] - c["removed"]        # 0 at every count
+    acc = gc.discharge_counts.accounting(c, packed)
+    balance, last, in_silo = acc["balance"], acc["last"], acc["in_silo"]
     gc.series.write_csv(os.path.join(a.out, f"{name}.csv"),
                         [("t_over_td", t / P.T_D), ("t_s", t), ("present", c["atoms"]), ("reinserted", c["fed"]),
                          ("removed", c["removed"]), ("below_floor", c["below"]), ("discharged", discharged)],
@@ -286,17 +270,15 @@ def flow(a, variant, R_d, case):
     w = steady * P.MASS
     k_fit = gc.discharge_counts.beverloo_k(w, 2 * v["R"], P.D, rho_b, P.BEVERLOO_C, n_exp, length, P.G)
     cpu, wall, nseg = gc.chunks.cost(case, "segment")
-    last = {k: int(x[-1]) for k, x in c.items()}
-    in_silo = last["atoms"] - last["below"]
     keys = [("run", name), ("R_over_d", R_d), ("outlet_width_m", 2 * v["R"]), ("dt_s", v["DT"]), ("t_d_s", P.T_D),
             ("t_end_over_td", float(t[-1] / P.T_D)), ("average_from_over_td", t0 / P.T_D),
             ("steady_rate_per_s", steady), ("steady_rate_se_per_s", se), ("steady_rate_per_td", steady * P.T_D),
             ("steady_mass_flow_kg_s", w), ("bulk_density_kg_m3", rho_b),
             ("beverloo_k3_per_s", bev[3.0]), ("beverloo_k1_per_s", bev[1.0]), ("beverloo_k_at_C058", k_fit),
-            ("packed", packed), ("reinserted", last["fed"]), ("inserted", packed + last["fed"]), ("in_silo", in_silo),
+            ("packed", packed), ("reinserted", last["fed"]), ("inserted", acc["inserted"]), ("in_silo", in_silo),
             ("below_floor", last["below"]), ("removed_at_sink", last["removed"]),
             ("of_which_strays", last["stray"]),
-            ("discharged", last["removed"] + last["below"]),
+            ("discharged", acc["discharged"]),
             ("balance_max_abs", int(np.max(np.abs(balance)))), ("counts", len(t)),
             ("segments", nseg), ("cpu_s", round(cpu, 1)), ("wall_s", round(wall)),
             ("particle_steps_per_cpu_s", float(np.mean(c["atoms"])) * c["step"][-1] / cpu if cpu else math.nan)]
@@ -317,7 +299,7 @@ def flow(a, variant, R_d, case):
           f"{t0 / P.T_D:g}-{t[-1] / P.T_D:.3g} t_d; Beverloo {bev[3.0]:.0f}-{bev[1.0]:.0f} 1/s (k = 3..1; k = "
           f"{k_fit:.2f} at C = 0.58); accounting {packed} + {last['fed']} = {in_silo} + {last['below']} + "
           f"{last['removed']} (largest imbalance {int(np.max(np.abs(balance)))}); {cpu:.0f} CPU-s", flush=True)
-    return dict(name=name, summary=dict(keys), t=t, discharged=discharged, tw=tw, rate=rate, balance=balance,
+    return dict(name=name, summary=dict(keys), t=t, discharged=discharged, tw=tw, rate=rate, acc=acc,
                 bev=bev, steady=steady, se=se)
 
 
@@ -344,12 +326,7 @@ def check_run(c, r, variant):
         c.within(f"{r['name']}: steady dN/dt in the Beverloo band k = 3..1 (C = 0.58) [1/s]", s["steady_rate_per_s"],
                  r["bev"][3.0], r["bev"][1.0], "Beverloo (1961) for a circular orifice, the fill's bulk density; "
                  "the monolayer's slit is reported only (Hagen-Beverloo has no established C, k for one layer)")
-    c.exact(f"{r['name']}: packed + re-inserted - present - removed at every count ({s['counts']} counts)",
-            int(np.max(np.abs(r["balance"]))), 0, "integer counts: no particle made or lost")
-    c.exact(f"{r['name']}: inserted = in silo + below the floor + removed at the end",
-            s["inserted"], s["in_silo"] + s["below_floor"] + s["removed_at_sink"], "integer counts")
-    c.true(f"{r['name']}: particles re-inserted and removed", s["reinserted"] > 0 and s["removed_at_sink"] > 0,
-           f"{s['reinserted']} re-inserted, {s['removed_at_sink']} removed", "the flow ran and was fed")
+    gc.discharge_counts.check_accounting(c, r["name"], r["acc"])
 
 
 def main():
