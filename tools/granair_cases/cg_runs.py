@@ -8,6 +8,7 @@ a study keeps, the mass check's record, and the check that what it keeps is fini
     kept = reduce(f, "r")                     coordinates, density, velocity, P and sqrt(J2) of both stresses
     rec = mass_record(csv, log, depth)        int rho dV on the grid against granairCG's particle mass
     bad, n = nonfinite(paths, keys)           the fields of kept CSVs with a NaN or an infinity
+    check(checks, name, paths, mass, tol)     the kept fields finite; the mass record within tol
     b = Batch(case, base, have, missing, label)   granairCG runs of one case, each once; b.run(stem, opts, what)
     b.write_costs(path, extra, header)        their CPU seconds by what they were, the total over all passes
 
@@ -96,6 +97,20 @@ def nonfinite(paths, keys=("p_contact", "tau_contact", "p_kinetic", "tau_kinetic
             if not np.all(np.isfinite(t[k])):
                 bad.append(f"{os.path.basename(path)}:{k}")
     return bad, n
+
+
+def check(checks, name, paths, mass, tol):
+    """The checks of a run's CG outputs (a gc.checks.Checks): every density and stress of
+    the kept CSVs `paths` finite, and the density integrated over a window enclosing every
+    particle (`mass`: mass_record's keys) their mass within `tol`."""
+    bad, n = nonfinite(paths)
+    checks.true(f"{name}: CG stresses and density finite", not bad and n > 0,
+                f"{n} values in {len(paths)} files" + (f"; not: {bad}" if bad else ""),
+                "densities and stresses are defined everywhere (zero where empty)")
+    checks.close(f"{name}: CG density integrated over a window enclosing every particle vs their mass [kg]",
+                 mass["grid_mass_kg"], mass["particle_mass_kg"], tol,
+                 "the kernel integrates to 1 and lies inside the window; the grid sum is a midpoint rule (spacing = w), "
+                 "in RZ less its end term at the axis (gc.cg_grids.mass)")
 
 
 class Batch:

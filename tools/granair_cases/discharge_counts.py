@@ -4,6 +4,7 @@ table with the strays each segment deleted at its start counted as removed, the 
 as means over windows of whole counts, its steady value over an averaging window, and
 Beverloo's k at a fixed C (cases/orifice-arch).
 
+    st = steps(dt, unit, every, snapshot, segment, transient, average)   step counts on one count grid
     segments = plan(total, seg, snap, avg_from, cg_on)   gc.chunks.liggghts' segments: nsteps, cg_every
     c = read(case, n_segments, columns)     {column: int array} of post/counts_<k>.txt, "removed" + strays
     acc = accounting(c, packed)             the balance at every count and the end's totals
@@ -23,6 +24,19 @@ import os
 import numpy as np
 
 from . import CaseError, dem, series
+
+
+def steps(dt, unit, every, snapshot, segment, transient, average):
+    """The step counts of a segmented run with times in units of `unit` [s] (t_d): between
+    counts (`every`), CG snapshots, segments, the start of the averaging window (after
+    `transient`) and the run's end (`average` later). Each is a whole multiple of the one
+    before (snapshots of counts, segments and the window of snapshots), so every snapshot
+    and every segment's end is a count: {print, snap, seg, avg_from, total}."""
+    n_print = max(1, round(every * unit / dt))
+    n_snap = n_print * max(1, round(snapshot / every))
+    n_seg = n_snap * max(1, round(segment / snapshot))
+    n_from = n_snap * round(transient / snapshot)
+    return dict(print=n_print, snap=n_snap, seg=n_seg, avg_from=n_from, total=n_from + n_snap * round(average / snapshot))
 
 
 def plan(total, seg, snap, avg_from, cg_on=True):

@@ -4,7 +4,7 @@ grids whose answer is known: a kinetic pressure peaked on a paraboloid (its maxi
 refined exactly, alpha recovered), an outlet velocity of a known free-fall height, a
 contact pressure crossing a level at a known height, block errors by hand; kernels and
 windows whose grid points fall on multiples of the spacing, the invariants of an
-isotropic and a pure-shear stress, the mass record of a uniform grid, a NaN found,
+isotropic and a pure-shear stress, the mass record of a uniform grid, a NaN found, the checks of both,
 granairCG runs made once (a stand-in program); and the panels' lines. Last, the
 committed orifice-arch fields give the alpha the committed arch table holds."""
 import math
@@ -124,6 +124,13 @@ with tempfile.TemporaryDirectory() as tmp:
     check("nonfinite count", n, 12)
     if bad != ["b.csv:p_contact"]:
         failures.append(f"nonfinite: {bad}")
+    from granair_cases import checks
+    ch = checks.Checks("unit")
+    full = os.path.join(tmp, "c.csv")
+    series.write_csv(full, [(k, np.ones(2)) for k in ("density", "p_contact", "tau_contact", "p_kinetic", "tau_kinetic")])
+    cg_runs.check(ch, "run", [full], rec, 1e-3)             # finite; 12 vs 12.06 kg is 0.5 % off
+    if [ln[:4] for ln in ch.lines] != ["PASS", "FAIL"]:
+        failures.append(f"cg_runs.check: {ch.lines}")
     # Batch: a stand-in granairCG that writes <out>.csv; a second run is skipped
     bindir = os.path.join(tmp, "bin")
     os.makedirs(bindir)

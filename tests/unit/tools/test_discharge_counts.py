@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The case layer's discharge_counts, packing_regions and contact modules (tools/granair_cases): the segment
-plan; the counts of a two-segment run read from hand-made `fix print` files and logs, the
+"""The case layer's discharge_counts, packing_regions and contact modules (tools/granair_cases): the step
+counts and the segment plan; the counts of a two-segment run read from hand-made `fix print` files and logs, the
 strays of the second segment added to "removed" from its start on, its accounting
 balanced (and its checks failing one particle off); a loose packing inside a cylinder
 and a box (packing_regions); the rate of a count growing
@@ -63,6 +63,12 @@ with tempfile.TemporaryDirectory() as case:
         failures.append("a missing segment: no CaseError")
     except CaseError:
         pass
+
+# step counts: dt = 1e-3 s, the unit 0.1 s: counts every 0.05 units (5 steps), snapshots every 0.5 (10 counts),
+# segments of 3 (6 snapshots), the window after 2 for 4
+st = discharge_counts.steps(1e-3, 0.1, 0.05, 0.5, 3.0, 2.0, 4.0)
+if st != dict(print=5, snap=50, seg=300, avg_from=200, total=600):
+    failures.append(f"steps: {st}")
 
 # the segments: 25 steps in pieces of 10, CG from the segments ending after step 12
 pl = discharge_counts.plan(25, 10, 5, 12)
