@@ -152,19 +152,10 @@ def compute(a, variant, R_d, case, g, dt, st, keep_dumps=False):
 
 def check(c, a, variant, R_d):
     """Every stress of the run's CG outputs finite; the density integral over the enclosing
-    window equals the particles' mass within MASS_INTEGRAL_TOL."""
-    name = f"{variant}_R{R_d:g}"
-    out = os.path.join(a.out, "fields")
-    paths = [p for p in sorted(glob.glob(os.path.join(out, f"{name}_*.csv"))) if not p.endswith("_arch.csv")]
-    bad, n = gc.cg_runs.nonfinite(paths)
-    c.true(f"{name}: CG stresses and density finite", not bad and n > 0,
-           f"{n} values in {len(glob.glob(os.path.join(out, name + '_*.csv'))) - 1} files" + (f"; not: {bad}" if bad else ""),
-           "densities and stresses are defined everywhere (zero where empty)")
-    m = gc.series.read_keys(os.path.join(out, f"{name}_mass.txt"))
-    c.close(f"{name}: CG density integrated over a window enclosing every particle vs their mass [kg]",
-            m["grid_mass_kg"], m["particle_mass_kg"], P.MASS_INTEGRAL_TOL,
-            "the kernel integrates to 1 and lies inside the window; the grid sum is a midpoint rule (spacing = w), "
-            "in RZ less its end term at the axis (mass_integral)")
+    window equals the particles' mass within MASS_INTEGRAL_TOL (gc.cg_runs.check)."""
+    name, out = f"{variant}_R{R_d:g}", os.path.join(a.out, "fields")
+    gc.cg_runs.check(c, name, [p for p in sorted(glob.glob(os.path.join(out, f"{name}_*.csv"))) if not p.endswith("_arch.csv")],
+                     gc.series.read_keys(os.path.join(out, f"{name}_mass.txt")), P.MASS_INTEGRAL_TOL)
 
 
 # ------------------------------------------------------------------ plots

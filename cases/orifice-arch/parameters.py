@@ -92,7 +92,7 @@ ARCH_FIT_R = 0.9                  # the parabola is fitted over r / R <= this (t
 CONTACT_VANISH = 0.1              # the contact-stress "arch": where tr(sigma_c)/3 falls to this x rho_b g R (README)
 ARCH_WINDOW_PAD = 3.0             # the small window of the block runs reaches R + this x the kernel's cutoff...
 
-# --- closed form (README "Flow rate") ---------------------------------------
+# --- closed form (README "Flow rate"): Beverloo's band k = 1..3 at C (gc.closed_forms.beverloo_band) ---
 BEVERLOO_C, K_RANGE = 0.58, (1.0, 3.0)
 
 # --- checks -----------------------------------------------------------------
@@ -108,15 +108,3 @@ def contact_law(k_n=K_N, e=RESTITUTION, m=MASS):
     out = contact.linear_dashpot(k_n, e, m)
     out["dt"] = out["t_contact_pp"] / STEPS_PER_CONTACT
     return out
-
-
-def beverloo_rate(R, rho_b, k, slab_gap=None):
-    """Beverloo particle rate [1/s]: circular orifice of diameter 2R (3-D silo), or
-    Hagen-Beverloo for a slit 2R wide and slab_gap long (the monolayer) with the
-    layer's bulk density rho_b = mass / (area x gap)."""
-    from granair_cases import closed_forms as cf
-    if slab_gap is None:
-        w = cf.beverloo_circular(2 * R, D, rho_b, k, BEVERLOO_C, G)
-    else:
-        w = cf.beverloo_slot(2 * R, D, rho_b, slab_gap, k, BEVERLOO_C, G)
-    return w / MASS

@@ -59,15 +59,11 @@ def law():
 
 
 def steps(size):
-    """Step counts of a size: between counts, CG snapshots, segments; the start of the
-    averaging window and the run's end (all whole multiples of the count interval)."""
-    cfg, dt = P.SIZES[size], law()["DT"]
-    n_print = max(1, round(P.PRINT_EVERY * P.T_D / dt))
-    n_snap = n_print * max(1, round(cfg["snapshot"] / P.PRINT_EVERY))
-    n_seg = n_snap * max(1, round(cfg["segment"] / cfg["snapshot"]))
-    n_from = n_snap * round(cfg["transient"] / cfg["snapshot"])
-    return dict(print=n_print, snap=n_snap, seg=n_seg, avg_from=n_from,
-                total=n_from + n_snap * round(cfg["average"] / cfg["snapshot"]))
+    """Step counts of a size (gc.discharge_counts.steps): between counts, CG snapshots, segments;
+    the start of the averaging window and the run's end."""
+    c = P.SIZES[size]
+    return gc.discharge_counts.steps(law()["DT"], P.T_D, P.PRINT_EVERY, c["snapshot"], c["segment"], c["transient"],
+                                     c["average"])
 
 
 def geometry(size, variant):
@@ -265,7 +261,9 @@ def flow(a, variant, R_d, case):
     steady, se = gc.discharge_counts.steady_rate(t, discharged, tw, rate, t0)
     rho_b = float(fill_keys["bulk_density_kg_m3"])
     gap = 2 * g["half_gap"] if variant == "slab" else None
-    bev = {k: P.beverloo_rate(v["R"], rho_b, k, gap) for k in P.K_RANGE}
+    lo, hi = gc.closed_forms.beverloo_band("circular" if gap is None else "slot", 2 * v["R"], P.D, rho_b, P.K_RANGE,
+                                           P.BEVERLOO_C, gap)
+    bev = {3.0: lo / P.MASS, 1.0: hi / P.MASS}       # particles per s at k = 3 and 1 (Beverloo; a slit: Hagen-Beverloo)
     n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
     w = steady * P.MASS
     k_fit = gc.discharge_counts.beverloo_k(w, 2 * v["R"], P.D, rho_b, P.BEVERLOO_C, n_exp, length, P.G)
