@@ -6,22 +6,13 @@ free-fall arch.
     check(c, a, variant, R_d)                   stresses finite; density integral = particle mass
     summarise(a, wanted)                        arch.csv, arch.png across outlets and kernels
 
-Coordinates: RZ about the silo axis (azimuthal averages), XZ for the monolayer
-(averaged over the gap). Kernel widths: gauss `--width w` (cutoff 3 w, grid
-spacing w), heaviside `--width w` (the ball's radius, spacing w / 2): grid
-points at multiples of the spacing in z (and x), at (i + 1/2) spacing in r.
-
-Per run and kernel (OUT/fields/<run>_<kernel><w/d>.csv): density, solid
-fraction, velocity (r or x, and z), and for the contact and the kinetic
-stress their trace P = tr(sigma)/3 and deviator sqrt(J2) (compression
-positive: P_kinetic = rho <v'^2>/3 > 0; the reference prints sigma_k
-tension-positive). The free-fall arch: at each r (|x|) below ARCH_FIT_R x R,
-z_c is where the kinetic pressure peaks along z within ARCH_Z_RANGE x R
-(an interior maximum, refined by the parabola through its neighbours);
-z_c / R = alpha (1 - (r / R)^2) by least squares. alpha's uncertainty:
-the scatter of alpha over `block_count` consecutive blocks of the snapshots
-(each its own granairCG run on a window around the outlet), standard error
-of their mean; the fit's own standard error is listed too.
+RZ about the silo axis, XZ for the monolayer (averaged over the gap); kernels, their
+grids and windows: gc.cg_runs. Per run and kernel (OUT/fields/<run>_<kernel><w/d>.csv)
+the fields of gc.cg_runs.reduce (stresses compression positive: P_kinetic = rho <v'^2>/3
+> 0; the reference prints sigma_k tension-positive). The arch three ways and its
+paraboloid: gc.arch, in ARCH_Z_RANGE x R for r (|x|) <= ARCH_FIT_R x R; alpha's
+uncertainty: its standard error over `block_count` consecutive blocks of the snapshots
+(each its own granairCG run on a window around the outlet), and the fit's own.
 """
 import glob
 import math
