@@ -235,6 +235,12 @@ def discharge(a, variant, R_d):
 COUNTS = ("step", "atoms", "fed", "removed", "below")         # the columns of post/counts_<k>.txt
 
 
+def beverloo_form(g):
+    """(n, L) of W = C rho_b sqrt(g) L (D - k d)^n: the silo's circular orifice (5/2, 1), the
+    monolayer's slit across the gap (Hagen-Beverloo: 3/2, the gap)."""
+    return (2.5, 1.0) if g["variant"] == "silo" else (1.5, 2 * g["half_gap"])
+
+
 def flow(a, variant, R_d, case):
     """Counts, accounting and flow rate of one run; writes OUT/<name>.csv, .flow.csv, .summary.txt."""
     v, g = values(a.size, variant, R_d)
@@ -260,11 +266,10 @@ def flow(a, variant, R_d, case):
     t0 = st["avg_from"] * v["DT"]
     steady, se = gc.discharge_counts.steady_rate(t, discharged, tw, rate, t0)
     rho_b = float(fill_keys["bulk_density_kg_m3"])
-    gap = 2 * g["half_gap"] if variant == "slab" else None
-    lo, hi = gc.closed_forms.beverloo_band("circular" if gap is None else "slot", 2 * v["R"], P.D, rho_b, P.K_RANGE,
-                                           P.BEVERLOO_C, gap)
+    n_exp, length = beverloo_form(g)
+    lo, hi = gc.closed_forms.beverloo_band("circular" if variant == "silo" else "slot", 2 * v["R"], P.D, rho_b,
+                                           P.K_RANGE, P.BEVERLOO_C, length if variant == "slab" else None)
     bev = {3.0: lo / P.MASS, 1.0: hi / P.MASS}       # particles per s at k = 3 and 1 (Beverloo; a slit: Hagen-Beverloo)
-    n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
     w = steady * P.MASS
     k_fit = gc.discharge_counts.beverloo_k(w, 2 * v["R"], P.D, rho_b, P.BEVERLOO_C, n_exp, length, P.G)
     cpu, wall, nseg = gc.chunks.cost(case, "segment")
@@ -369,9 +374,7 @@ def post(a, wanted):
             if R_d in P.SIZES[a.size][var]["cg"]:
                 fields.check(c, a, var, R_d)
         plot_flow(a, var, results, os.path.join(a.out, "flow_rate.png" if var == "silo" else "flow_rate_slab.png"))
-        g = geometry(a.size, var)
-        gap = 2 * g["half_gap"] if var == "slab" else None
-        n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
+        n_exp, length = beverloo_form(geometry(a.size, var))
         C, k = gc.outlet.beverloo_fit([2 * R_d * P.D for R_d in sorted(results)],
                                       [results[R_d]["steady"] * P.MASS for R_d in sorted(results)],
                                       float(np.mean([r["summary"]["bulk_density_kg_m3"] for _, r in sorted(results.items())])),
