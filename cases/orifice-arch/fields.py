@@ -159,30 +159,16 @@ def plots(a, variant, R_d, out):
     main = reds[kernels[0]]
     at_d = {key: red for key, red in reds.items() if key[1] == 1.0}     # the profiles: w = d
     style = {("gauss", 1.0): "-", ("heaviside", 1.0): "--", ("gauss", 0.5): ":", ("heaviside", 0.5): "-."}
-    # density profiles
+    # density and velocity profiles (w = d: Gauss solid, Heaviside dashed)
     zs = [z for z in P.DENSITY_PROFILE_Z if z * P.D <= main["z"][-1] + 1e-9]
-    fig, ax = plt.subplots(figsize=(7.5, 4.8))
-    gc.profile_plots.at_heights([ax], at_d, ax_name, ["density"], zs, P.RHO_P, kernels[0], style, P.D)
-    ax.axvline(R_d, color="0.5", lw=0.8)
-    ax.set(xlabel=f"{ax_name} / d", ylabel="density / rho_p (solid fraction)",
-           title=f"{name}: density profiles, Gauss (solid) and Heaviside (dashed), w = d")
-    ax.title.set_fontsize(9)
-    ax.legend(fontsize=7, ncol=3)
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    gc.plots.save(fig, os.path.join(out, f"{name}_density_profiles.png"))
-    # velocity profiles
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
-    gc.profile_plots.at_heights(axes, at_d, ax_name, [f"velocity_{ax_name}", "velocity_z"], P.VELOCITY_PROFILE_Z,
-                                math.sqrt(P.G * P.D), kernels[0], style, P.D)
-    for axx, comp in zip(axes, (ax_name, "z")):
-        axx.axvline(R_d, color="0.5", lw=0.8)
-        axx.set(xlabel=f"{ax_name} / d", ylabel=f"v_{comp} / sqrt(g d)")
-        axx.grid(alpha=0.3)
-    axes[0].legend(fontsize=7)
-    fig.suptitle(f"{name}: velocity profiles, Gauss (solid) and Heaviside (dashed), w = d", fontsize=9)
-    fig.tight_layout()
-    gc.plots.save(fig, os.path.join(out, f"{name}_velocity_profiles.png"))
+    gc.profile_plots.profiles_figure(os.path.join(out, f"{name}_density_profiles.png"), at_d, ax_name, ["density"],
+                                     ["density / rho_p (solid fraction)"], zs, P.RHO_P, kernels[0], style, P.D, R_d,
+                                     f"{name}: density profiles, Gauss (solid) and Heaviside (dashed), w = d", ncol=3)
+    gc.profile_plots.profiles_figure(os.path.join(out, f"{name}_velocity_profiles.png"), at_d, ax_name,
+                                     [f"velocity_{ax_name}", "velocity_z"], [f"v_{ax_name} / sqrt(g d)", "v_z / sqrt(g d)"],
+                                     P.VELOCITY_PROFILE_Z, math.sqrt(P.G * P.D), kernels[0], style, P.D, R_d,
+                                     f"{name}: velocity profiles, Gauss (solid) and Heaviside (dashed), w = d",
+                                     figsize=(10, 4.2), suptitle=True)
     # stress maps (the first kernel)
     fig, axes = plt.subplots(1, 4, figsize=(13, 4.6), sharey=True)
     gc.profile_plots.maps(fig, axes, main[ax_name] / P.D, main["z"] / P.D, main, [

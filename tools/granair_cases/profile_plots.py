@@ -4,10 +4,13 @@ drawn on axes the caller made, so a case keeps only its layout and its words
 
     rates(ax, curves, t0)                    rates against time, each with its closed-form band
     at_heights(axes, grids, axis, comps, zs, scale, first)   each field along the axis at heights z
+    profiles_figure(path, grids, axis, comps, ylabels, zs, scale, first, ...)   the same as a figure, a panel per field
     maps(fig, axes, a, z, grid_of, panels, mark)           one pcolormesh per field, each its colour bar
     paraboloid(ax, r, z, R, alpha, label, marker)          points z/R against r/R and alpha (1 - (r/R)^2)
 """
 import numpy as np
+
+from . import plots
 
 
 def rates(ax, curves, t0, window_label=" averaging window"):
@@ -33,6 +36,29 @@ def at_heights(axes, grids, axis, comps, zs, scale, first, styles=None, d=1.0):
             for ax, comp in zip(axes, comps):
                 ax.plot(red[axis] / d, red[comp][:, j] / scale, color=f"C{i % 10}", ls=styles.get(key, "-"),
                         lw=1.1, label=f"z = {zd:g} d" if key == first else None)
+
+
+def profiles_figure(path, grids, axis, comps, ylabels, zs, scale, first, styles=None, d=1.0, mark=None, title="",
+                    figsize=(7.5, 4.8), suptitle=False, ncol=1):
+    """at_heights() as a figure of one panel per field of comps (x: axis / d, y: ylabels[k]),
+    a grey line at `mark` (the outlet's edge), the legend on the first panel (ncol columns),
+    the title over the figure (suptitle) or over the first panel. Returns the path."""
+    plt = plots.pyplot()
+    fig, axes = plt.subplots(1, len(comps), figsize=figsize, squeeze=False)
+    axes = axes[0]
+    at_heights(axes, grids, axis, comps, zs, scale, first, styles, d)
+    for ax, ylabel in zip(axes, ylabels):
+        if mark is not None:
+            ax.axvline(mark, color="0.5", lw=0.8)
+        ax.set(xlabel=f"{axis} / d", ylabel=ylabel)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=7, ncol=ncol)
+    if suptitle:
+        fig.suptitle(title, fontsize=9)
+    else:
+        axes[0].set_title(title, fontsize=9)
+    fig.tight_layout()
+    return plots.save(fig, path)
 
 
 def maps(fig, axes, a, z, grid_of, panels, mark=None, scale=1e3, cmap="viridis"):

@@ -182,6 +182,11 @@ check("at_heights: u / scale", float(axes[0].lines[0].get_ydata()[3]), x[3], 1e-
 check("at_heights: w at z = 1", float(axes[1].lines[2].get_ydata()[0]), 0.5, 1e-12)
 if axes[0].lines[1].get_label().startswith("z ="):
     failures.append("at_heights: only the first grid's lines are labelled")
+with tempfile.TemporaryDirectory() as tmp:
+    png = profile_plots.profiles_figure(os.path.join(tmp, "p.png"), {"a": {"x": x, "z": z, "u": Xg, "w": Zx}}, "x",
+                                        ["u", "w"], ["u", "w"], [0.0, 1.0], 1.0, "a", mark=0.5, suptitle=True)
+    if not os.path.getsize(png) > 1000:
+        failures.append("profiles_figure: no picture")
 fig3, ax3 = plt.subplots()
 ax3.plot([0, 1], [0, 10])
 profile_plots.rates(ax3, [("run", np.array([0.0, 1.0]), np.array([5.0, 6.0]), (4.0, 7.0))], 0.5)
