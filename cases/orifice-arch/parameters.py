@@ -92,7 +92,7 @@ ARCH_FIT_R = 0.9                  # the parabola is fitted over r / R <= this (t
 CONTACT_VANISH = 0.1              # the contact-stress "arch": where tr(sigma_c)/3 falls to this x rho_b g R (README)
 ARCH_WINDOW_PAD = 3.0             # the small window of the block runs reaches R + this x the kernel's cutoff...
 
-# --- closed form (README "Flow rate") ---------------------------------------
+# --- closed form (README "Flow rate"): Beverloo's band k = 1..3 at C (gc.closed_forms.beverloo_band) ---
 BEVERLOO_C, K_RANGE = 0.58, (1.0, 3.0)
 
 # --- checks -----------------------------------------------------------------
@@ -100,31 +100,11 @@ MASS_INTEGRAL_TOL = 1e-3          # CG: int rho dV over an enclosing window vs t
 
 
 def contact_law(k_n=K_N, e=RESTITUTION, m=MASS):
-    """LIGGGHTS hooke/stiffness numbers for a linear spring-dashpot with restitution e:
-    the damped oscillator m_eff x'' + c x' + k x = 0 leaves contact at t_c = pi / omega_d
-    with velocity ratio e = exp(-beta t_c), beta = c / (2 m_eff), so
-    beta = omega_0 |ln e| / sqrt(pi^2 + ln^2 e), omega_0 = sqrt(k / m_eff); LIGGGHTS'
-    gamman (absolute_damping off) is c / m_eff = 2 beta [1/s]. Returns dict with
-    gamman for particle pairs (m_eff = m/2) and particle-wall contacts (m_eff = m),
-    the pair contact time [s] and the DEM step."""
-    ln_e = abs(math.log(e))
-    out = {}
-    for name, m_eff in (("pp", m / 2), ("pw", m)):
-        w0 = math.sqrt(k_n / m_eff)
-        beta = w0 * ln_e / math.sqrt(math.pi ** 2 + ln_e ** 2)
-        out["gamman_" + name] = 2 * beta
-        out["t_contact_" + name] = math.pi / math.sqrt(w0 ** 2 - beta ** 2)
+    """LIGGGHTS hooke/stiffness numbers for a linear spring-dashpot with restitution e
+    (gc.contact.linear_dashpot: gamman and the contact time of particle pairs, m_eff = m/2,
+    and particle-wall contacts, m_eff = m) and the DEM step: a pair's contact time /
+    STEPS_PER_CONTACT."""
+    from granair_cases import contact
+    out = contact.linear_dashpot(k_n, e, m)
     out["dt"] = out["t_contact_pp"] / STEPS_PER_CONTACT
     return out
-
-
-def beverloo_rate(R, rho_b, k, slab_gap=None):
-    """Beverloo particle rate [1/s]: circular orifice of diameter 2R (3-D silo), or
-    Hagen-Beverloo for a slit 2R wide and slab_gap long (the monolayer) with the
-    layer's bulk density rho_b = mass / (area x gap)."""
-    from granair_cases import closed_forms as cf
-    if slab_gap is None:
-        w = cf.beverloo_circular(2 * R, D, rho_b, k, BEVERLOO_C, G)
-    else:
-        w = cf.beverloo_slot(2 * R, D, rho_b, slab_gap, k, BEVERLOO_C, G)
-    return w / MASS

@@ -59,15 +59,11 @@ def law():
 
 
 def steps(size):
-    """Step counts of a size: between counts, CG snapshots, segments; the start of the
-    averaging window and the run's end (all whole multiples of the count interval)."""
-    cfg, dt = P.SIZES[size], law()["DT"]
-    n_print = max(1, round(P.PRINT_EVERY * P.T_D / dt))
-    n_snap = n_print * max(1, round(cfg["snapshot"] / P.PRINT_EVERY))
-    n_seg = n_snap * max(1, round(cfg["segment"] / cfg["snapshot"]))
-    n_from = n_snap * round(cfg["transient"] / cfg["snapshot"])
-    return dict(print=n_print, snap=n_snap, seg=n_seg, avg_from=n_from,
-                total=n_from + n_snap * round(cfg["average"] / cfg["snapshot"]))
+    """Step counts of a size (gc.discharge_counts.steps): between counts, CG snapshots, segments;
+    the start of the averaging window and the run's end."""
+    c = P.SIZES[size]
+    return gc.discharge_counts.steps(law()["DT"], P.T_D, P.PRINT_EVERY, c["snapshot"], c["segment"], c["transient"],
+                                     c["average"])
 
 
 def geometry(size, variant):
@@ -115,23 +111,10 @@ def values(size, variant, R_d=None):
 def packing(g, seed):
     """Random sequential addition of the fill at PACKING_INSERT: [(x, y, z, d)]."""
     d, gap = g["d"], 0.02 * g["d"]
-    r = d / 2
     if g["variant"] == "silo":
-        rmax = g["R_s"] - r - gap
-
-        def sample(rng, r, top):
-            return rng.uniform(-rmax, rmax), rng.uniform(-rmax, rmax), rng.uniform(r + gap, top)
-
-        def inside(x, y, z, r):
-            return x * x + y * y <= rmax * rmax and z >= r + gap
+        sample, inside = gc.packing_regions.cylinder(g["R_s"], gap)
     else:
-        xmax, ymax = g["width"] / 2 - r - gap, g["half_gap"] - r - gap
-
-        def sample(rng, r, top):
-            return rng.uniform(-xmax, xmax), rng.uniform(-ymax, ymax), rng.uniform(r + gap, top)
-
-        def inside(x, y, z, r):
-            return abs(x) <= xmax and abs(y) <= ymax and z >= r + gap
+        sample, inside = gc.packing_regions.box(g["width"] / 2, g["half_gap"], gap)
     return gc.dem.loose_packing([d] * g["n"], random.Random(seed), sample, inside, lambda t: t + d, g["loose_top"],
                                 d * 1.0001, gap, origin=(-g["half_x"], -g["half_y"], 0.0))
 
@@ -236,11 +219,7 @@ def discharge(a, variant, R_d):
     name = run_name(variant, R_d)
     case = run_folder(a, variant, R_d)
     cg_on = R_d in P.SIZES[a.size][variant]["cg"]
-    plan, s0 = [], 0
-    while s0 < st["total"]:
-        s1 = min(s0 + st["seg"], st["total"])
-        plan.append(dict(nsteps=s1 - s0, cg_every=st["snap"] if cg_on and s1 > st["avg_from"] else 0))
-        s0 = s1
+    plan = gc.discharge_counts.plan(st["total"], st["seg"], st["snap"], st["avg_from"], cg_on)
     print(f"orifice-arch {name}: {len(plan)} segments of {st['seg']} steps ({st['seg'] * v['DT'] / P.T_D:.3g} t_d), "
           f"dt = {v['DT']:.4g} s, CG {'on' if cg_on else 'off'}", flush=True)
     rec = gc.chunks.liggghts(case, "dem/in.liggghts", plan, "../fill/dem/fill.restart", label=f"orifice-arch {name}")
@@ -256,38 +235,10 @@ def discharge(a, variant, R_d):
 COUNTS = ("step", "atoms", "fed", "removed", "below")         # the columns of post/counts_<k>.txt
 
 
-def counts(case, n_segments):
-    """The counts of a run's segments in order: {step, atoms, fed, removed, below} (ints)."""
-    paths = [os.path.join(case, "post", f"counts_{k}.txt") for k in range(1, n_segments + 1)]
-    for k, path in enumerate(paths, 1):
-        if not os.path.exists(path):
-            raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
-    out = {k: np.rint(x).astype(int) for k, x in gc.dem.read_print(paths, COUNTS).items()}
-    # the strays each segment deleted at its start (template/dem/in.liggghts) are removed too:
-    # segment k's counts carry those of segments 1..k
-    stray = np.zeros(len(out["step"]), dtype=int)
-    for k, s0 in enumerate(segment_starts(case, n_segments), 1):
-        stray[out["step"] > s0] += strays(case, k)
-    out["stray"] = stray
-    out["removed"] = out["removed"] + stray
-    return out
-
-
-def strays(case, k):
-    """The particles segment k deleted below the sink plane at its start (its LIGGGHTS log)."""
-    path = os.path.join(case, "log", f"segment_{k}.liggghts")
-    try:
-        with open(path) as fh:
-            found = [ln for ln in fh if ln.startswith(f"granair stray {k}:")]
-    except OSError:
-        raise gc.CaseError(f"{path}: missing (segment {k} did not run)")
-    return int(found[-1].split(":")[1].split()[0]) if found else 0
-
-
-def segment_starts(case, n_segments):
-    """The first step of each segment: the step of its restart (the previous one's last count)."""
-    return [0] + [int(gc.dem.read_print([os.path.join(case, "post", f"counts_{k}.txt")], COUNTS)["step"][-1])
-                  for k in range(1, n_segments)]
+def beverloo_form(g):
+    """(n, L) of W = C rho_b sqrt(g) L (D - k d)^n: the silo's circular orifice (5/2, 1), the
+    monolayer's slit across the gap (Hagen-Beverloo: 3/2, the gap)."""
+    return (2.5, 1.0) if g["variant"] == "silo" else (1.5, 2 * g["half_gap"])
 
 
 def flow(a, variant, R_d, case):
@@ -297,46 +248,40 @@ def flow(a, variant, R_d, case):
     name = run_name(variant, R_d)
     fill_keys = gc.series.read_keys(os.path.join(a.out, "runs", variant, "fill", "summary.txt"))
     packed = int(fill_keys["particles_packed"])
-    c = counts(case, math.ceil(st["total"] / st["seg"]))
+    c = gc.discharge_counts.read(case, math.ceil(st["total"] / st["seg"]), COUNTS)   # strays added to removed
     t = c["step"] * v["DT"]
     discharged = c["removed"] + c["below"]
-    balance = packed + c["fed"] - c["atoms"] - c["removed"]        # 0 at every count
+    acc = gc.discharge_counts.accounting(c, packed)
+    balance, last, in_silo = acc["balance"], acc["last"], acc["in_silo"]
     gc.series.write_csv(os.path.join(a.out, f"{name}.csv"),
                         [("t_over_td", t / P.T_D), ("t_s", t), ("present", c["atoms"]), ("reinserted", c["fed"]),
                          ("removed", c["removed"]), ("below_floor", c["below"]), ("discharged", discharged)],
                         fmt=["{:.6g}", "{:.6g}", "{:d}", "{:d}", "{:d}", "{:d}", "{:d}"])
     # dN/dt: means over windows of 1 t_d (the change of the discharged count over each)
-    per = max(1, round(P.T_D / (st["print"] * v["DT"])))
-    edges = np.arange(0, len(t), per)
-    tw = 0.5 * (t[edges[:-1]] + t[edges[1:]])
-    rate = np.diff(discharged[edges]) / np.diff(t[edges])
+    tw, rate = gc.discharge_counts.window_rates(t, discharged, max(1, round(P.T_D / (st["print"] * v["DT"]))))
     mass_flow = rate * P.MASS
     gc.series.write_csv(os.path.join(a.out, f"{name}.flow.csv"),
                         [("t", tw), ("t_over_td", tw / P.T_D), ("rate_per_s", rate), ("mass_flow_kg_s", mass_flow)],
                         fmt="{:.6g}")
     t0 = st["avg_from"] * v["DT"]
-    steady = gc.series.slope(t, discharged.astype(float), t0)
-    sel = tw >= t0
-    se = float(np.std(rate[sel], ddof=1) / math.sqrt(sel.sum())) if sel.sum() > 1 else math.nan
+    steady, se = gc.discharge_counts.steady_rate(t, discharged, tw, rate, t0)
     rho_b = float(fill_keys["bulk_density_kg_m3"])
-    gap = 2 * g["half_gap"] if variant == "slab" else None
-    bev = {k: P.beverloo_rate(v["R"], rho_b, k, gap) for k in P.K_RANGE}
-    # k of Beverloo with C fixed: (W / (C rho_b sqrt(g) [L]))^(1/n) = D - k d
-    n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
+    n_exp, length = beverloo_form(g)
+    lo, hi = gc.closed_forms.beverloo_band("circular" if variant == "silo" else "slot", 2 * v["R"], P.D, rho_b,
+                                           P.K_RANGE, P.BEVERLOO_C, length if variant == "slab" else None)
+    bev = {3.0: lo / P.MASS, 1.0: hi / P.MASS}       # particles per s at k = 3 and 1 (Beverloo; a slit: Hagen-Beverloo)
     w = steady * P.MASS
-    k_fit = (2 * v["R"] - (w / (P.BEVERLOO_C * rho_b * math.sqrt(P.G) * length)) ** (1 / n_exp)) / P.D
+    k_fit = gc.discharge_counts.beverloo_k(w, 2 * v["R"], P.D, rho_b, P.BEVERLOO_C, n_exp, length, P.G)
     cpu, wall, nseg = gc.chunks.cost(case, "segment")
-    last = {k: int(x[-1]) for k, x in c.items()}
-    in_silo = last["atoms"] - last["below"]
     keys = [("run", name), ("R_over_d", R_d), ("outlet_width_m", 2 * v["R"]), ("dt_s", v["DT"]), ("t_d_s", P.T_D),
             ("t_end_over_td", float(t[-1] / P.T_D)), ("average_from_over_td", t0 / P.T_D),
             ("steady_rate_per_s", steady), ("steady_rate_se_per_s", se), ("steady_rate_per_td", steady * P.T_D),
             ("steady_mass_flow_kg_s", w), ("bulk_density_kg_m3", rho_b),
             ("beverloo_k3_per_s", bev[3.0]), ("beverloo_k1_per_s", bev[1.0]), ("beverloo_k_at_C058", k_fit),
-            ("packed", packed), ("reinserted", last["fed"]), ("inserted", packed + last["fed"]), ("in_silo", in_silo),
+            ("packed", packed), ("reinserted", last["fed"]), ("inserted", acc["inserted"]), ("in_silo", in_silo),
             ("below_floor", last["below"]), ("removed_at_sink", last["removed"]),
             ("of_which_strays", last["stray"]),
-            ("discharged", last["removed"] + last["below"]),
+            ("discharged", acc["discharged"]),
             ("balance_max_abs", int(np.max(np.abs(balance)))), ("counts", len(t)),
             ("segments", nseg), ("cpu_s", round(cpu, 1)), ("wall_s", round(wall)),
             ("particle_steps_per_cpu_s", float(np.mean(c["atoms"])) * c["step"][-1] / cpu if cpu else math.nan)]
@@ -357,21 +302,16 @@ def flow(a, variant, R_d, case):
           f"{t0 / P.T_D:g}-{t[-1] / P.T_D:.3g} t_d; Beverloo {bev[3.0]:.0f}-{bev[1.0]:.0f} 1/s (k = 3..1; k = "
           f"{k_fit:.2f} at C = 0.58); accounting {packed} + {last['fed']} = {in_silo} + {last['below']} + "
           f"{last['removed']} (largest imbalance {int(np.max(np.abs(balance)))}); {cpu:.0f} CPU-s", flush=True)
-    return dict(name=name, summary=dict(keys), t=t, discharged=discharged, tw=tw, rate=rate, balance=balance,
+    return dict(name=name, summary=dict(keys), t=t, discharged=discharged, tw=tw, rate=rate, acc=acc,
                 bev=bev, steady=steady, se=se)
 
 
 def plot_flow(a, variant, results, path):
     plt = gc.plots.pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
-    t0 = steps(a.size)["avg_from"] * law()["DT"] / P.T_D
-    for i, (R_d, r) in enumerate(sorted(results.items())):
-        col = f"C{i}"
-        ax.plot(r["tw"] / P.T_D, r["rate"] * P.T_D, color=col, lw=1.2,
-                label=f"R = {R_d:g} d: {r['steady'] * P.T_D:.1f} per t_d")
-        ax.axhspan(r["bev"][3.0] * P.T_D, r["bev"][1.0] * P.T_D, color=col, alpha=0.15)
-    ax.axvline(t0, color="0.4", ls=":", lw=1)
-    ax.text(t0, ax.get_ylim()[1] * 0.97, " averaging window", fontsize=7, va="top", color="0.3")
+    gc.profile_plots.rates(ax, [(f"R = {R_d:g} d: {r['steady'] * P.T_D:.1f} per t_d", r["tw"] / P.T_D, r["rate"] * P.T_D,
+                                 (r["bev"][3.0] * P.T_D, r["bev"][1.0] * P.T_D)) for R_d, r in sorted(results.items())],
+                           steps(a.size)["avg_from"] * law()["DT"] / P.T_D)
     what = "3-D silo, circular outlet" if variant == "silo" else f"monolayer (gap {P.GAP_2D:g} d), slit 2R"
     ax.set(xlabel="t / t_d", ylabel="dN/dt  [particles per t_d]",
            title=f"orifice-arch, {what}, {a.size} size: flow rate (1 t_d means); bands: Beverloo k = 3..1, C = 0.58")
@@ -389,12 +329,7 @@ def check_run(c, r, variant):
         c.within(f"{r['name']}: steady dN/dt in the Beverloo band k = 3..1 (C = 0.58) [1/s]", s["steady_rate_per_s"],
                  r["bev"][3.0], r["bev"][1.0], "Beverloo (1961) for a circular orifice, the fill's bulk density; "
                  "the monolayer's slit is reported only (Hagen-Beverloo has no established C, k for one layer)")
-    c.exact(f"{r['name']}: packed + re-inserted - present - removed at every count ({s['counts']} counts)",
-            int(np.max(np.abs(r["balance"]))), 0, "integer counts: no particle made or lost")
-    c.exact(f"{r['name']}: inserted = in silo + below the floor + removed at the end",
-            s["inserted"], s["in_silo"] + s["below_floor"] + s["removed_at_sink"], "integer counts")
-    c.true(f"{r['name']}: particles re-inserted and removed", s["reinserted"] > 0 and s["removed_at_sink"] > 0,
-           f"{s['reinserted']} re-inserted, {s['removed_at_sink']} removed", "the flow ran and was fed")
+    gc.discharge_counts.check_accounting(c, r["name"], r["acc"])
 
 
 def main():
@@ -439,9 +374,7 @@ def post(a, wanted):
             if R_d in P.SIZES[a.size][var]["cg"]:
                 fields.check(c, a, var, R_d)
         plot_flow(a, var, results, os.path.join(a.out, "flow_rate.png" if var == "silo" else "flow_rate_slab.png"))
-        g = geometry(a.size, var)
-        gap = 2 * g["half_gap"] if var == "slab" else None
-        n_exp, length = (2.5, 1.0) if gap is None else (1.5, gap)
+        n_exp, length = beverloo_form(geometry(a.size, var))
         C, k = gc.outlet.beverloo_fit([2 * R_d * P.D for R_d in sorted(results)],
                                       [results[R_d]["steady"] * P.MASS for R_d in sorted(results)],
                                       float(np.mean([r["summary"]["bulk_density_kg_m3"] for _, r in sorted(results.items())])),

@@ -26,6 +26,12 @@
     field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
     study       the driver of a study of many LIGGGHTS runs: fills once, resumable runs, a job pool, --setup-only, --post-only
     size_study  the DEM converged in parcel size: window rates, Beverloo's size fit over s and its pairs, its plot
+    arch        the free-fall arch above an outlet from 2-D CG fields, three ways, and its paraboloid fit
+    cg_runs     granairCG on 2-D grids: kernels, grid-aligned and enclosing windows, the kept fields, the mass record
+    discharge_counts  a re-fed LIGGGHTS discharge in segments: counts with strays, window rates, the steady rate
+    contact     the linear spring-dashpot's damping and contact time from a restitution coefficient
+    packing_regions  a loose packing's region: a cylinder, a box (sample and inside for dem.loose_packing)
+    profile_plots  panels of a study's CG fields and rates: rates with bands, profiles at heights, maps, paraboloids
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -39,3 +45,4 @@ class CaseError(Exception):
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
+from . import arch, cg_runs, discharge_counts, contact, profile_plots, packing_regions  # noqa: E402,F401
