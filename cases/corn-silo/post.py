@@ -260,24 +260,19 @@ def check_run(c, r):
 
 
 def table(out, rows, depth):
-    """summary.md: the results against the angle, mean +- SD of the runs."""
-    def f(r, key, scale=1.0, digits=3):
-        m, s = r[key] * scale, r[key + "_sd"] * scale
-        return f"{m:.{digits}g}" + (f" ± {s:.2g}" if math.isfinite(s) else "")
+    """summary.md: the results against the angle, mean +- SD of the runs (gc.tables)."""
+    pm = gc.tables.pm
     head = ["angle [deg]", "runs", "W [kg/s]", "hopper p max static / discharge [Pa]", "hopper tau max static / discharge [Pa]",
             "shaft p max static / discharge [Pa]", "shaft tau max static / discharge [Pa]",
             f"shaft p at {depth:g} m [Pa]", "I1 (per 0.01 s)", "J2 (per 0.01 s)", "wall/core descent",
             "stagnant mass", "pattern"]
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    for r in rows:
-        lines.append("| " + " | ".join([
-            f"{r['angle_deg']}", f"{r['runs']}", f(r, "steady_mass_flow_kg_s"),
-            f(r, "hopper_static_normal_max_Pa") + " / " + f(r, "hopper_discharge_normal_max_Pa"),
-            f(r, "hopper_static_shear_max_Pa") + " / " + f(r, "hopper_discharge_shear_max_Pa"),
-            f(r, "shaft_static_normal_max_Pa") + " / " + f(r, "shaft_discharge_normal_max_Pa"),
-            f(r, "shaft_static_shear_max_Pa") + " / " + f(r, "shaft_discharge_shear_max_Pa"),
-            f(r, "shaft_pressure_at_janssen_depth_Pa"), f(r, "I1_mean"), f(r, "J2_mean"),
-            f(r, "descent_wall_over_core", digits=2), f(r, "stagnant_mass_fraction", 100, 2) + " %", r["pattern"]]) + " |")
+    lines = gc.tables.markdown(head, [[
+        f"{r['angle_deg']}", f"{r['runs']}", pm(r, "steady_mass_flow_kg_s"),
+        *(pm(r, f"{w}_static_{q}_max_Pa") + " / " + pm(r, f"{w}_discharge_{q}_max_Pa")
+          for w in ("hopper", "shaft") for q in ("normal", "shear")),
+        pm(r, "shaft_pressure_at_janssen_depth_Pa"), pm(r, "I1_mean"), pm(r, "J2_mean"),
+        pm(r, "descent_wall_over_core", digits=2), pm(r, "stagnant_mass_fraction", 100, 2) + " %", r["pattern"]]
+        for r in rows])
     with open(os.path.join(out, "summary.md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
     print("\n".join(lines), flush=True)

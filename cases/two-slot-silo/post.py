@@ -20,38 +20,7 @@ def priority(L):
     return ORDER.index(L) if L in ORDER else len(ORDER)
 
 
-# --- accounting ------------------------------------------------------------------
-CHUNK_LINE = re.compile(r"^granair chunk (\d+) (start|end): time (\S+) atoms (\d+) in_silo (\d+) "
-                        r"outlet (\d+) sink (\d+) feed (\d+)", re.M)
-
-
-def chunk_states(run, k):
-    path = os.path.join(run, "log", f"chunk_{k}.liggghts")
-    with open(path) as fh:
-        found = {m.group(2): dict(t=float(m.group(3)), atoms=int(m.group(4)), in_silo=int(m.group(5)),
-                                  outlet=int(m.group(6)), sink=int(m.group(7)), feed=int(m.group(8)))
-                 for m in CHUNK_LINE.finditer(fh.read()) if int(m.group(1)) == k}
-    if set(found) != {"start", "end"}:
-        raise gc.CaseError(f"{path}: no 'granair chunk {k} start/end' lines (did the chunk finish?)")
-    return found["start"], found["end"]
-
-
-def pending(run, k):
-    """IDs of the particles the sink had counted but not yet deleted when chunk
-    k ended (template/dem/in.chunk deletes them before its restart)."""
-    path = os.path.join(run, "dem", f"pending_{k}.txt")
-    if not os.path.exists(path):
-        raise gc.CaseError(f"{path}: missing (did chunk {k} finish? runs set up before the pending deletions "
-                           f"must be run again)")
-    return [int(i) for i in gc.dem.read_dump(path)["id"]]
-
-
-def lost_warnings(run, k):
-    """LIGGGHTS' "Lost atoms" warnings on chunk k's screen (template/dem/in.chunk)."""
-    with open(os.path.join(run, "log", f"chunk_{k}.screen"), errors="replace") as fh:
-        return fh.read().count("WARNING: Lost atoms")
-
-
+# --- accounting (gc.tally) ---------------------------------------------------------
 def fill_count(fill):
     path = os.path.join(fill, "log", "fill.liggghts")
     with open(path) as fh:
@@ -70,31 +39,19 @@ def events(run, stem, with_x=False):
 
 
 def accounting(v, run, fill):
-    """Every particle: inserted (fill + feed) = in silo + below the outlet + removed;
-    discharged (crossed the outlet) = below the outlet + removed; per chunk the
-    atom count follows feed and sink exactly."""
-    n_fill, n_req = fill_count(fill)
-    feed = outlet = sink = 0
-    chunk_ok, atoms_prev, pend, lost = True, n_fill, [], 0
-    for k, _, _ in silo.chunks(v):
-        s, e = chunk_states(run, k)
-        pend += pending(run, k)
-        lost += lost_warnings(run, k)
-        df, do, ds = e["feed"] - s["feed"], e["outlet"] - s["outlet"], e["sink"] - s["sink"]
-        chunk_ok &= s["atoms"] == atoms_prev and e["atoms"] == s["atoms"] + df - ds
-        feed, outlet, sink, atoms_prev = feed + df, outlet + do, sink + ds, e["atoms"]
-    in_silo = e["in_silo"]
-    below = e["atoms"] - in_silo
-    ids, _, _ = events(run, "crossings")
-    rid, _, _ = events(run, "removed")
-    pend_ok = bool(set(pend) <= set(rid.tolist()))
-    return dict(fill=n_fill, fill_requested=n_req, fed=feed, inserted=n_fill + feed, in_silo=in_silo,
-                below_outlet=below, removed=sink, discharged=outlet, crossing_records=int(ids.size),
-                crossing_ids_unique=int(np.unique(ids).size), removed_records=int(rid.size),
-                chunks_consistent=bool(chunk_ok), pending_deleted=len(pend), pending_all_removed=pend_ok, lost_atom_warnings=lost,
-                t_end=e["t"],
-                closes=bool(n_fill + feed == in_silo + below + sink and outlet == below + sink and chunk_ok
-                            and ids.size == outlet and rid.size == sink and pend_ok))
+    """The exact balance of the run's chunks (gc.tally.balance); the ids the chunks deleted
+    at their ends are in dem/pending_<k>.txt (template/dem/in.chunk)."""
+    ks = [k for k, _, _ in silo.chunks(v)]
+    pend = []
+    for k in ks:
+        path = os.path.join(run, "dem", f"pending_{k}.txt")
+        if not os.path.exists(path):
+            raise gc.CaseError(f"{path}: missing (did chunk {k} finish? runs set up before the pending deletions "
+                               f"must be run again)")
+        pend += [int(i) for i in gc.dem.read_dump(path)["id"]]
+    return gc.tally.balance(*fill_count(fill), [gc.tally.chunk_states(os.path.join(run, "log", f"chunk_{k}.liggghts"), k)
+                                                for k in ks], events(run, "crossings")[0], events(run, "removed")[0],
+                            pend, sum(gc.tally.lost_atoms(os.path.join(run, "log", f"chunk_{k}.screen")) for k in ks))
 
 
 # --- flow rate -------------------------------------------------------------------
@@ -292,9 +249,7 @@ def table(a, res, rho_b):
             lo2, hi2 = hagen_beverloo(2 * P.D0, rho_b[f])
             fh.write(f"# {f}: settled bulk density {rho_b[f]:.1f} kg/m3; Hagen-Beverloo (C = {P.BEVERLOO_C}, k = 1..3): "
                      f"14 mm {lo * 1e3:.2f}-{hi * 1e3:.2f} g/s, 28 mm {lo2 * 1e3:.2f}-{hi2 * 1e3:.2f} g/s\n")
-        w = [max(len(str(x)) for x in col) for col in zip(head, *rows)]
-        for row in [head] + rows:
-            fh.write("  ".join(str(x).rjust(n) for x, n in zip(row, w)) + "\n")
+        fh.write("".join(line + "\n" for line in gc.tables.aligned([head] + rows)))
     return rows
 
 
@@ -475,20 +430,7 @@ def levels(a, res, rho_b):
 def checks(a, res, rho_b, c):
     for (f, L), r in sorted(res.items(), key=lambda t: (t[0][0], priority(t[0][1]))):
         n = f"{f} {r['geometry']}"
-        acc = r["accounting"]
-        c.exact(f"{n}: particles poured = requested", acc["fill"], acc["fill_requested"], "the packing places every sphere; LIGGGHTS reads them all")
-        c.exact(f"{n}: inserted (fill + fed) = in silo + below the outlet + removed",
-                acc["inserted"], acc["in_silo"] + acc["below_outlet"] + acc["removed"], "integer counts")
-        c.exact(f"{n}: crossed the outlet = below the outlet + removed", acc["discharged"],
-                acc["below_outlet"] + acc["removed"], "integer counts: nothing passes the outlet plane uncounted")
-        c.exact(f"{n}: crossing records = crossings, removal records = removals",
-                (acc["crossing_records"], acc["removed_records"]), (acc["discharged"], acc["removed"]), "one line each")
-        c.true(f"{n}: every chunk's atom count = start + fed - removed", acc["chunks_consistent"],
-               f"{len(r['cost'])} chunks, {acc['lost_atom_warnings']} LIGGGHTS 'Lost atoms' warnings",
-               "integer counts (LIGGGHTS 3.8 warns with equal counts after a restart: template/dem/in.chunk)")
-        c.true(f"{n}: the particles deleted at chunk ends (counted by the sink, not yet deleted) are all "
-               f"among the sink's records", acc["pending_all_removed"], f"{acc['pending_deleted']} particles",
-               "massflow/mesh deletes at the next neighbour-list build")
+        gc.tally.check(c, n, r["accounting"], len(r["cost"]))
         if f in rho_b and L in (P.SINGLE, 0, 32):
             # one slot of 14 or 28 mm; at L = 32 mm (15 d) two 14 mm slots, each its own band
             lo, hi = hagen_beverloo(2 * P.D0 if L == 0 else P.D0, rho_b[f])

@@ -26,6 +26,8 @@
     field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
     study       the driver of a study of many LIGGGHTS runs: fills once, resumable runs, a job pool, --setup-only, --post-only
     size_study  the DEM converged in parcel size: window rates, Beverloo's size fit over s and its pairs, its plot
+    tables      text tables: markdown, right-aligned columns, the mean +- SD cell of repeated runs
+    tally       the exact particle count of a chunked LIGGGHTS discharge with a feed, an outlet counter and a sink
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -39,3 +41,4 @@ class CaseError(Exception):
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
+from . import tally, tables  # noqa: E402,F401
