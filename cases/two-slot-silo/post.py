@@ -73,49 +73,22 @@ def flow(v, L, run, t_end):
                 discharged_kg=float(m.sum())), (0.5 * (edges[1:] + edges[:-1]), series)
 
 
-# --- CG fields -------------------------------------------------------------------
-def cg_run(v, run, stem, lo, hi, log, last_only=False):
-    """granairCG over the run's CG dumps (post/cg/) into <run>/cg/<stem>.csv on the window
-    lo..hi (XZ, Gaussian w = d), the four walls as planes; last_only: the last snapshot.
-    Returns (CPU seconds, the snapshots' steps)."""
-    dumps = os.path.join(run, "post", "cg")
-    steps = [s for s, _ in gc.dem.numbered(os.path.join(dumps, "particles_*.dump"))]
-    if not steps:
-        raise gc.CaseError(f"{dumps}: no CG snapshots (particles_*.dump)")
-    opts = [("particles", "post/cg/particles_*.dump"), ("pairs", "post/cg/pairs_*.dump"),
-            ("walls", "post/cg/walls_*.dump"), ("plane-wall", ["wxlo", "x", v["XLO"]]),
-            ("plane-wall", ["wxhi", "x", v["XHI"]]), ("plane-wall", ["wfront", "y", 0]),
-            ("plane-wall", ["wback", "y", v["DEPTH"]]), ("dt", v["DEM_DT"]), ("coordinates", "XZ"),
-            ("kernel", "gauss"), ("width", P.CG_WIDTH_OVER_D * P.D_MEAN), ("cutoff", P.CG_CUTOFF),
-            ("spacing", P.CG_GRID), ("min", list(lo)), ("max", list(hi)), ("threads", 1), ("format", "csv")]
-    if last_only:
-        t = steps[-1] * v["DEM_DT"]
-        opts += [("from", t * (1 - 1e-9)), ("to", t * (1 + 1e-9))]
-    return gc.cg.run(run, os.path.join("cg", stem), opts, log), steps
-
-
+# --- CG fields (gc.cg_slab) ------------------------------------------------------------
 def cg_fields(v, L, run):
     """The time-averaged XZ fields over the openings (20 snapshots), the R2
     averages above each opening, the phi(I) points of R1, and the mass check."""
-    out = os.path.join(run, "cg")
-    os.makedirs(out, exist_ok=True)
-    lo, hi = (v["XLO"], 0.0, -0.01), (v["XHI"], v["DEPTH"], P.R1_HEIGHT + 0.01)
-    cpu, steps = cg_run(v, run, "fields", lo, hi, "granairCG")
-    f = gc.series.read_csv(os.path.join(out, "fields.csv"))
-    x, z = f["x"], f["z"]
-    g, p, i_num, phi = f["shear_rate"], f["pressure"], f["inertial_number"], f["volume_fraction"]
-    # the paper's shear rate: sqrt((dx vz + dz vx)^2 + (dx vx - dz vz)^2), from the XZ gradient
-    gd = np.sqrt((f["velocity_gradient_xz"] + f["velocity_gradient_zx"]) ** 2
-                 + (f["velocity_gradient_xx"] - f["velocity_gradient_zz"]) ** 2)
-    tau = f["shear_stress"]
-    eta = np.where(gd > 0, tau / np.where(gd > 0, gd, 1), np.nan)
-    i_paper = np.where(p > 0, P.D_MEAN * gd * np.sqrt(P.RHO_P / np.where(p > 0, p, 1)), np.nan)
-    r2 = []
-    for xc in P.centres(L):
-        sel = (np.abs(x - xc) <= P.R2_HALF_WIDTH) & (z >= 0) & (z <= P.R2_HEIGHT)
-        r2.append({k: float(np.nanmean(a[sel])) for k, a in (("shear_rate", gd), ("pressure", p),
-                   ("inertial_number", i_paper), ("volume_fraction", phi), ("viscosity", eta),
-                   ("shear_rate_granairCG", g), ("inertial_number_granairCG", i_num))})
+    box, width = (v["XLO"], v["XHI"], v["DEPTH"]), P.CG_WIDTH_OVER_D * P.D_MEAN
+    grid = (v["DEM_DT"], width, P.CG_CUTOFF, P.CG_GRID)
+    os.makedirs(os.path.join(run, "cg"), exist_ok=True)
+    cpu, steps = gc.cg_slab.run(run, "fields", box, (v["XLO"], 0.0, -0.01), (v["XHI"], v["DEPTH"], P.R1_HEIGHT + 0.01),
+                                *grid, "granairCG")
+    f = gc.series.read_csv(os.path.join(run, "cg", "fields.csv"))
+    x, z, p, phi = f["x"], f["z"], f["pressure"], f["volume_fraction"]
+    gd, i_paper, eta = gc.cg_slab.fullard(f, P.D_MEAN, P.RHO_P)      # the paper's shear rate, I and eta
+    named = (("shear_rate", gd), ("pressure", p), ("inertial_number", i_paper), ("volume_fraction", phi),
+             ("viscosity", eta), ("shear_rate_granairCG", f["shear_rate"]), ("inertial_number_granairCG", f["inertial_number"]))
+    r2 = [gc.cg_slab.box_mean(named, (np.abs(x - xc) <= P.R2_HALF_WIDTH) & (z >= 0) & (z <= P.R2_HEIGHT))
+          for xc in P.centres(L)]
     # R1 for phi(I): 0-5 cm above the floor, less one kernel cutoff at the side
     # walls and below the fill height (there the kernel reaches past the
     # particles and phi drops for a reason that is not I)
@@ -124,16 +97,10 @@ def cg_fields(v, L, run):
           & np.isfinite(i_paper) & (i_paper > P.I_FIT_MIN))
     keep = ["x", "z", "velocity_x", "velocity_z", "volume_fraction", "pressure", "shear_stress"]
     cols = [(k, f[k]) for k in keep] + [("shear_rate", gd), ("inertial_number", i_paper), ("viscosity", eta)]
-    # the mass check: one snapshot on a grid that holds every kernel
-    m = 3 * P.CG_CUTOFF * P.CG_WIDTH_OVER_D * P.D_MEAN
-    lo_m, hi_m = (v["XLO"] - m, 0.0, P.SINK_Z - m), (v["XHI"] + m, v["DEPTH"], v["ZHI"] + m)
-    cpu += cg_run(v, run, "mass", lo_m, hi_m, "granairCG_mass", last_only=True)[0]
-    cg_mass, _ = gc.cg_grids.mass(gc.cg.read(os.path.join(out, "mass.csv")), depth=v["DEPTH"])
-    snap = gc.dem.read_dump(os.path.join(run, "post", "cg", f"particles_{steps[-1]}.dump"))
-    dump_mass = float(snap["mass"][(snap["y"] >= 0) & (snap["y"] <= v["DEPTH"])].sum())
+    cg_mass, dump_mass, cpu_m = gc.cg_slab.mass_check(run, box, (P.SINK_Z, v["ZHI"]), *grid, steps[-1])
     return dict(snapshots=len(steps), t_from=steps[0] * v["DEM_DT"], t_to=steps[-1] * v["DEM_DT"], r2=r2,
                 phi_I=np.column_stack([i_paper[r1], phi[r1]]).tolist(), cg_mass_kg=cg_mass,
-                particle_mass_kg=dump_mass, cpu_s=round(cpu, 1)), cols
+                particle_mass_kg=dump_mass, cpu_s=round(cpu + cpu_m, 1)), cols
 
 
 def run(v, L, run_dir, fill, out):
@@ -142,8 +109,8 @@ def run(v, L, run_dir, fill, out):
     name = silo.geometry_name(L)
     os.makedirs(out, exist_ok=True)
     js = os.path.join(out, f"{name}.json")
-    cost = silo.cost(run_dir)
-    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(silo.record_file(run_dir)):
+    cost = gc.chunk_inputs.cost(run_dir)
+    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(gc.chunk_inputs.record_file(run_dir)):
         with open(js) as fh:
             return json.load(fh)
     acc = accounting(v, run_dir, fill)
@@ -196,7 +163,7 @@ def study(a, runs, geoms, c):
         for L in geoms:
             run_dir = os.path.join(runs, f, silo.geometry_name(L))
             if not os.path.exists(os.path.join(a.out, f, f"{silo.geometry_name(L)}.json")) and \
-                    os.path.exists(silo.record_file(run_dir)) and silo.finished(v, run_dir):
+                    os.path.exists(gc.chunk_inputs.record_file(run_dir)) and gc.chunk_inputs.finished(run_dir, silo.chunks(v)):
                 try:
                     run(v, L, run_dir, fill, os.path.join(a.out, f))
                 except gc.CaseError as e:
@@ -344,31 +311,12 @@ def plot_r2(a, res):
 
 
 def plot_phi_I(a, res):
-    plt = gc.plots.pyplot()
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    lines = []
-    for f in sorted({g for g, _ in res}):
-        pts = [p for (g, _), r in res.items() if g == f and "cg" in r for p in r["cg"]["phi_I"]]
-        if not pts:
-            continue
-        i, phi = np.asarray(pts).T
-        ax.plot(i, phi, ".", ms=2, color=COLOURS[f], alpha=0.3)
-        a1, a2 = gc.fits.phi_of_I(i, phi)
-        ii = np.linspace(P.I_FIT_MIN, max(i), 50)
-        ax.plot(ii, a1 / (1 + a2 * ii), color=COLOURS[f], label=f"{f}: a1 = {a1:.3f}, a2 = {a2:.3f} ({len(pts)} points)")
-        lines.append((f, a1, a2, len(pts)))
-    ax.set(xlabel="I", ylabel="phi", title="phi against I over R1 (I > 0.05; not within 3w of the side walls), "
-                                           "fit phi = a1 / (1 + a2 I)")
-    ax.title.set_fontsize(9)
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    gc.plots.save(fig, os.path.join(a.out, "phi_I.png"), dpi=110)
-    with open(os.path.join(a.out, "phi_I_fit.txt"), "w") as fh:
-        fh.write("# phi = a1 / (1 + a2 I), least squares in phi, over R1 (0-5 cm above the floor, not within one "
-                 "kernel cutoff of the side walls) for I > 0.05, every run of the set\n")
-        for f, a1, a2, n in lines:
-            fh.write(f"{f}: a1 = {a1:.5g}, a2 = {a2:.5g}, points = {n}\n")
+    gc.phi_i.plot(os.path.join(a.out, "phi_I.png"), os.path.join(a.out, "phi_I_fit.txt"),
+                  [(f, COLOURS[f], [p for (g, _), r in res.items() if g == f and "cg" in r for p in r["cg"]["phi_I"]])
+                   for f in sorted({g for g, _ in res})], P.I_FIT_MIN,
+                  "phi against I over R1 (I > 0.05; not within 3w of the side walls), fit phi = a1 / (1 + a2 I)",
+                  "phi = a1 / (1 + a2 I), least squares in phi, over R1 (0-5 cm above the floor, not within one "
+                  "kernel cutoff of the side walls) for I > 0.05, every run of the set")
 
 
 MAPS = (("speed", "|v| [m/s]", "viridis"), ("shear_rate", "shear rate [1/s]", "magma"),

@@ -26,6 +26,9 @@
     field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
     study       the driver of a study of many LIGGGHTS runs: fills once, resumable runs, a job pool, --setup-only, --post-only
     size_study  the DEM converged in parcel size: window rates, Beverloo's size fit over s and its pairs, its plot
+    cg_slab     CG fields of a thin slab silo between four plane walls (XZ): granairCG, Fullard's shear rate, I, eta, the mass check
+    phi_i       phi = a1 / (1 + a2 I) over CG points: the figure and the fits' text file
+    chunk_inputs  a LIGGGHTS run as one input file per chunk, run in turn (resumable), and the fill it starts from
     tables      text tables: markdown, right-aligned columns, the mean +- SD cell of repeated runs
     tally       the exact particle count of a chunked LIGGGHTS discharge with a feed, an outlet counter and a sink
 
@@ -41,4 +44,4 @@ class CaseError(Exception):
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
-from . import tally, tables  # noqa: E402,F401
+from . import tally, tables, cg_slab, phi_i, chunk_inputs  # noqa: E402,F401
