@@ -25,7 +25,7 @@ def numbers(size, friction):
     m_mean = sum(masses) / len(masses)
     # the contact time of the lightest particle pair sets the step; the CG
     # snapshot interval a whole number of steps, so are the series and chunks
-    t_c = P.contact_time(min(masses) / 2)
+    t_c = gc.linear_contact.contact_time(min(masses) / 2, P.K_N, P.RESTITUTION)
     per_snapshot = math.ceil(P.CG_SPACING_T / (P.DT_FRACTION * t_c))
     dt = P.CG_SPACING_T / per_snapshot
     v_mean = sum(math.pi / 6 * d ** 3 for d in P.D_SIZES) / len(P.D_SIZES)
@@ -35,7 +35,7 @@ def numbers(size, friction):
     # the box holds the loose packing (which may grow by a few mm when crowded)
     z_top = max(1.25 * fill_top, height + P.FEED_HEIGHT) + P.BOX_TOP_MARGIN
     mu_pp, mu_pw = P.FRICTION[friction]
-    gn_pp, gn_pw = P.gamma_per_mass(m_mean / 2), P.gamma_per_mass(m_mean)
+    gn_pp, gn_pw = (gc.linear_contact.gamma_per_mass(m, P.K_N, P.RESTITUTION) for m in (m_mean / 2, m_mean))
     snap_steps = per_snapshot
     return dict(
         SIZE=size, FRICTION=friction, WIDTH=width, HEIGHT=height, DEPTH=P.DEPTH, N_FILL=n_fill,

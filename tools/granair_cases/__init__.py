@@ -29,6 +29,7 @@
     cg_slab     CG fields of a thin slab silo between four plane walls (XZ): granairCG, Fullard's shear rate, I, eta, the mass check
     phi_i       phi = a1 / (1 + a2 I) over CG points: the figure and the fits' text file
     chunk_inputs  a LIGGGHTS run as one input file per chunk, run in turn (resumable), and the fill it starts from
+    linear_contact  the linear spring-dashpot: contact time, damping ratio, LIGGGHTS' gamman from a restitution
     tables      text tables: markdown, right-aligned columns, the mean +- SD cell of repeated runs
     tally       the exact particle count of a chunked LIGGGHTS discharge with a feed, an outlet counter and a sink
 
@@ -44,4 +45,4 @@ class CaseError(Exception):
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
-from . import tally, tables, cg_slab, phi_i, chunk_inputs  # noqa: E402,F401
+from . import tally, tables, cg_slab, phi_i, chunk_inputs, linear_contact  # noqa: E402,F401

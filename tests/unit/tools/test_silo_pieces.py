@@ -1,14 +1,23 @@
 #!/usr/bin/env python3
 """The pieces of the DEM-only silo studies (cases/two-slot-silo, cases/corn-silo) that
 live in the case layer: the chunked particle balance (gc.tally), the text tables
-(gc.tables), against hand-made logs and numbers. Fast (no simulation): label unit."""
+(gc.tables), a slab silo's CG fields (gc.cg_slab), the phi(I) fit's picture
+(gc.phi_i), the per-chunk inputs (gc.chunk_inputs), the linear spring-dashpot
+(gc.linear_contact), against hand-made logs, fields, stand-in programs and a
+numerically integrated contact. Fast (no simulation): label unit."""
 import math
 import os
+import sys
 import tempfile
 import unittest
 
+import numpy as np
+
 import granair_cases as gc
 from granair_cases import CaseError
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from test_case_layer import FakeProgram, read  # noqa: E402
 
 
 def write(path, text):
@@ -72,6 +81,135 @@ class Tables(unittest.TestCase):
         self.assertEqual(gc.tables.pm(dict(w=0.01234, w_sd=math.nan), "w", 100, 2), "1.2")     # one run: no SD
         self.assertEqual(gc.tables.markdown(["a", "b"], [[1, "x"]]), ["| a | b |", "|---|---|", "| 1 | x |"])
         self.assertEqual(gc.tables.aligned([["n", "value"], [10, 2.5]]), [" n  value", "10    2.5"])
+
+
+class CgSlab(unittest.TestCase):
+    def test_fullard_fields_of_shear_and_extension(self):
+        # simple shear vx = G z (gradient components xz + zx = G): gamma_dot = G; pure extension
+        # vx = E x, vz = -E z: gamma_dot = 2 E; at rest (or P = 0) no I and no viscosity
+        f = dict(velocity_gradient_xz=np.array([0.0, 3.0, 0.0, 0.0]), velocity_gradient_zx=np.array([0.0, 2.0, 0.0, 0.0]),
+                 velocity_gradient_xx=np.array([0.0, 0.0, 4.0, 1.0]), velocity_gradient_zz=np.array([0.0, 0.0, -4.0, -1.0]),
+                 pressure=np.array([10.0, 50.0, 200.0, 0.0]), shear_stress=np.array([1.0, 10.0, 40.0, 1.0]))
+        gd, i_num, eta = gc.cg_slab.fullard(f, 2e-3, 1200.0)
+        self.assertEqual(list(gd), [0.0, 5.0, 8.0, 2.0])
+        self.assertAlmostEqual(i_num[1], 2e-3 * 5 * math.sqrt(1200 / 50), places=15)
+        self.assertAlmostEqual(eta[2], 40 / 8)
+        self.assertTrue(math.isnan(eta[0]) and math.isnan(i_num[3]))
+        means = gc.cg_slab.box_mean([("eta", eta), ("gd", gd)], np.array([True, True, False, False]))
+        self.assertEqual(means, dict(eta=2.0, gd=2.5))           # the NaN of the point at rest left out
+
+    def test_granairCG_command_and_the_mass_check(self):
+        # a stand-in granairCG: its arguments to args_<n>.txt, a 2 x 2 XZ grid of density 1000 to <out>.csv
+        body = ('n=$(ls args_* 2>/dev/null | wc -l); echo "$@" > args_$n.txt\n'
+                'while [ $# -gt 0 ]; do [ "$1" = --out ] && out=$2; shift; done\n'
+                'printf "x,z,density\\n0,0,1000\\n0.001,0,1000\\n0,0.001,1000\\n0.001,0.001,1000\\n" > $out.csv\n')
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "granairCG", body):
+            case = os.path.join(d, "run")
+            for step in (100, 200):
+                write(os.path.join(case, "post", "cg", f"particles_{step}.dump"),
+                      "ITEM: TIMESTEP\n0\nITEM: ATOMS id x y z mass\n1 0 0.005 0 0.002\n2 0 0.02 0 0.5\n")
+            box = (-0.05, 0.05, 0.015)
+            cpu, steps = gc.cg_slab.run(case, "fields", box, (-0.05, 0, -0.01), (0.05, 0.015, 0.06), 1e-5, 2e-3, 3.0,
+                                        1e-3, "granairCG")
+            self.assertEqual(steps, [100, 200])
+            args = read(os.path.join(case, "args_0.txt")).split()
+            self.assertIn("--plane-wall wback y 0.015", " ".join(args))
+            self.assertNotIn("--from", args)
+            cg_kg, dump_kg, _ = gc.cg_slab.mass_check(case, box, (-0.02, 0.08), 1e-5, 2e-3, 3.0, 1e-3, 200)
+            args = " ".join(read(os.path.join(case, "args_1.txt")).split())
+            # the grid widened by 3 cutoffs x w = 18 mm; the last snapshot alone (t = 200 x 1e-5 s)
+            lo_hi = [float(x) for x in args.split("--min ")[1].split(" --threads")[0].replace("--max ", "").split()]
+            np.testing.assert_allclose(lo_hi, [-0.068, 0.0, -0.038, 0.068, 0.015, 0.098], rtol=1e-12)
+            self.assertIn("--from 0.001999999998", args)
+            self.assertAlmostEqual(cg_kg, 4000 * 1e-6 * 0.015)        # rho dx dz x depth
+            self.assertEqual(dump_kg, 0.002)                          # the particle behind the back wall left out
+
+
+class PhiI(unittest.TestCase):
+    def test_the_fit_of_exact_points_and_its_file(self):
+        i = np.linspace(0.05, 0.6, 40)
+        with tempfile.TemporaryDirectory() as d:
+            fits = gc.phi_i.plot(os.path.join(d, "phi_I.png"), os.path.join(d, "fit.txt"),
+                                 [("low", "tab:blue", np.column_stack([i, 0.58 / (1 + 0.41 * i)]).tolist()),
+                                  ("high", "tab:red", [])], 0.05, "t", "phi = a1 / (1 + a2 I)")
+            self.assertEqual([f[0] for f in fits], ["low"])             # a set without points is left out
+            self.assertAlmostEqual(fits[0][1], 0.58, places=5)
+            self.assertAlmostEqual(fits[0][2], 0.41, places=5)
+            self.assertEqual(read(os.path.join(d, "fit.txt")),
+                             "# phi = a1 / (1 + a2 I)\nlow: a1 = 0.58, a2 = 0.41, points = 40\n")
+            self.assertTrue(os.path.getsize(os.path.join(d, "phi_I.png")) > 0)
+
+
+# a stand-in liggghts: fails while `stop` exists and the input is in.chunk_1; else notes the
+# input and writes the restart its `write_restart` line names
+FAKE_CHUNK_LIGGGHTS = ('while [ $# -gt 0 ]; do [ "$1" = -in ] && in=$2; shift; done\n'
+                       '[ -e ../stop ] && [ "$in" = dem/in.chunk_1 ] && exit 1\n'
+                       'echo $in >> ran.txt; touch $(sed -n "s/^write_restart //p" $in)\n')
+
+
+class ChunkInputs(unittest.TestCase):
+    def test_layout_in_whole_intervals_and_the_snapshot_chunk(self):
+        # 0.42 s in 0.21 s chunks of 5 ms intervals (955 steps each), then 20 snapshots
+        self.assertEqual(gc.chunk_inputs.layout(0.42, 0.21, 0.005, 955, 20),
+                         [(0, 42 * 955, False), (1, 42 * 955, False), (2, 19 * 955 + 1, True)])
+        self.assertEqual(gc.chunk_inputs.layout(0.25, 0.3, 0.005, 10), [(0, 500, False)])
+
+    def test_inputs_run_in_turn_and_resume_after_a_failure(self):
+        text = "read_restart @RESTART_IN@\nrun @N_STEPS@ # @T_CHUNK:.3g@ s, cg @CG_EVERY@, seed @SEED@\nwrite_restart @RESTART_OUT@\n"
+        chunks = gc.chunk_inputs.layout(0.02, 0.01, 0.005, 10, 3)
+        with tempfile.TemporaryDirectory() as d, FakeProgram(d, "liggghts", FAKE_CHUNK_LIGGGHTS):
+            run, fill = os.path.join(d, "run"), os.path.join(d, "fill")
+            write(os.path.join(fill, "dem", "fill.restart"), "x")
+
+            def setup(folder):
+                gc.chunk_inputs.write(folder, text, chunks, dict(DEM_DT=1e-3, SNAP_STEPS=10),
+                                      os.path.join(fill, "dem", "fill.restart"), "in.chunk", lambda k: dict(SEED=k + 7))
+            setup_only, simulate = gc.chunk_inputs.stage(run, chunks, setup, progress=lambda s: None)
+            setup_only()
+            self.assertEqual(read(os.path.join(run, "dem", "in.chunk_2")),
+                             "read_restart dem/chunk_1.restart\nrun 21 # 0.021 s, cg 10, seed 9\n"
+                             "write_restart dem/chunk_2.restart\n")
+            self.assertTrue(read(os.path.join(run, "dem", "in.chunk_0")).startswith("read_restart ../fill/dem/fill.restart"))
+            write(os.path.join(d, "stop"), "")
+            with self.assertRaises(CaseError):
+                simulate()                                        # chunk 1 fails: chunk 0 is kept
+            self.assertEqual(list(gc.chunk_inputs.cost(run)), ["chunk_0"])
+            os.remove(os.path.join(d, "stop"))
+            cost = simulate()                                     # goes on at chunk 1
+            self.assertEqual(list(cost), ["chunk_0", "chunk_1", "chunk_2"])
+            self.assertEqual((cost["chunk_2"]["steps"], cost["chunk_2"]["cg"]), (21, True))
+            self.assertEqual(read(os.path.join(run, "ran.txt")).split(),
+                             ["dem/in.chunk_0", "dem/in.chunk_1", "dem/in.chunk_2"])
+            self.assertFalse(os.path.exists(os.path.join(run, "dem", "chunk_0.restart")))   # two back: removed
+            self.assertTrue(gc.chunk_inputs.finished(run, chunks))
+            simulate()                                            # finished: nothing runs again
+            self.assertEqual(len(read(os.path.join(run, "ran.txt")).split()), 3)
+
+
+class LinearContact(unittest.TestCase):
+    def test_against_the_integrated_damped_oscillator(self):
+        # m x'' = -k x - gamman m x' from x = 0, x' = 1 until the overlap x is 0 again (RK4)
+        m, k, e = 2e-6, 1e4, 0.6
+        t_c, gamman = gc.linear_contact.contact_time(m, k, e), gc.linear_contact.gamma_per_mass(m, k, e)
+
+        def acc(x, v):
+            return -k / m * x - gamman * v
+        x, v, t, h = 0.0, 1.0, 0.0, t_c / 20000
+        while True:
+            k1 = (v, acc(x, v))
+            k2 = (v + h / 2 * k1[1], acc(x + h / 2 * k1[0], v + h / 2 * k1[1]))
+            k3 = (v + h / 2 * k2[1], acc(x + h / 2 * k2[0], v + h / 2 * k2[1]))
+            k4 = (v + h * k3[1], acc(x + h * k3[0], v + h * k3[1]))
+            xn = x + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+            vn = v + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+            if xn < 0:                        # the contact ends inside this step: interpolate
+                frac = x / (x - xn)
+                t, v = t + frac * h, v + frac * (vn - v)
+                break
+            x, v, t = xn, vn, t + h
+        self.assertAlmostEqual(t / t_c, 1.0, places=6)
+        self.assertAlmostEqual(-v, e, places=6)
+        self.assertAlmostEqual(gc.linear_contact.damping_ratio(e), gamman / (2 * math.sqrt(k / m)), places=15)
 
 
 if __name__ == "__main__":
