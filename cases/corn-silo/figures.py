@@ -135,9 +135,7 @@ def layers(plt, out, angles, by_angle, run_root):
         col = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
         gc.plots.grains(fig, ax, final["x"][sel], final["z"][sel], 2 * final["radius"][sel],
                         np.where(col, "tab:orange", "tab:blue"))
-        ro = P.D_OUTLET / 2
-        ax.plot([-ro, -R, -R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
-        ax.plot([ro, R, R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
+        gc.silo_walls.outline(ax, P.D_OUTLET / 2, R, h, max(fill["z"]) + 0.02)
         m = by_angle[a][0]
         t_end = by_angle[a][1][0]["discharge_s"]
         ax.set_title(f"{a} deg, t = {t_end:.2f} s\n{m['pattern']}", fontsize=8)
@@ -172,8 +170,7 @@ def force_chains(plt, out, angles, by_angle, run_root):
             lc, mean = gc.plots.force_chains(ax, c, d)
             h = P.hopper_height(a)
             top = by_angle[a][0]["fill_surface_m"] + 0.02
-            ax.plot([-P.D_OUTLET / 2, -R, -R], [0, h, top], "k-", lw=0.8)
-            ax.plot([P.D_OUTLET / 2, R, R], [0, h, top], "k-", lw=0.8)
+            gc.silo_walls.outline(ax, P.D_OUTLET / 2, R, h, top, lw=0.8)
             ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
             ax.set_title(f"{a} deg, {'at rest' if step == 0 else f't = {step * dt:.2f} s'}\n"
                          f"mean force {mean * 1e3:.0f} mN", fontsize=8)

@@ -61,16 +61,11 @@ def run(name, run_dir, v, state, out):
     gc.series.write_csv(os.path.join(adir, f"s{k}_mass_flow.csv"), [("t", centres), ("mass_flow_kg_s", rate)],
                         fmt="{:.6g}")
 
-    # wall loads: the static fill, and every dump of the discharge
+    # wall loads: the static fill, and every dump of the discharge (gc.silo_walls)
     rings = geometry.rings(gc.dem.read_mesh_vtk(os.path.join(pdir, "walls_fill.vtk")), angle)
-    sn, ss, _ = gc.dem.wall_loads(os.path.join(pdir, "walls_fill.vtk"))
     files = [(s, p) for s, p in gc.dem.numbered(os.path.join(pdir, "walls_*.vtk")) if s > 0]
     steady = [(s, p) for s, p in files if s * dt >= min(P.STEADY_FROM, 0.4 * t[-1]) - 1e-9]
-    ring_n, ring_s, el_n, el_s = gc.wall_rings.loads(rings, files, steady)
-    i0 = len(files) - len(steady)
-    prof = dict(static_normal_Pa=rings.mean(sn), static_shear_Pa=rings.mean(ss),
-                discharge_normal_Pa=ring_n[i0:].mean(axis=0), discharge_shear_Pa=ring_s[i0:].mean(axis=0),
-                peak_normal_Pa=ring_n.max(axis=0), peak_shear_Pa=ring_s.max(axis=0))
+    prof, (sn, ss, el_n, el_s) = gc.silo_walls.profiles(rings, os.path.join(pdir, "walls_fill.vtk"), files, steady)
     res = dict(run=name, angle_deg=angle, seed=v["SEED"], grains=v["GRAINS"], youngs_Pa=v["YOUNGS"], dt_s=dt,
                discharge_s=float(t[-1]), steady_from_s=min(P.STEADY_FROM, 0.4 * t[-1]), steady_mass_flow_kg_s=w,
                bulk_density_kg_m3=rho_b, fill_surface_m=surface, hopper_height_m=h,
@@ -82,35 +77,13 @@ def run(name, run_dir, v, state, out):
                accounting_closes=inserted == last["in_silo"] + last["below_outlet"] + last["removed"],
                cpu_s=state["cpu_fill_s"] + state["cpu_discharge_s"], cpu_fill_s=state["cpu_fill_s"],
                wall_s=state["wall_s"])
-    for wall, hop in (("hopper", True), ("shaft", False)):
-        for kind, key in (("static", "static"), ("discharge", "discharge")):
-            for q in ("normal", "shear"):
-                val, z, along = rings.maximum(prof[f"{key}_{q}_Pa"], rings.is_hopper == hop)
-                res[f"{wall}_{kind}_{q}_max_Pa"], res[f"{wall}_{kind}_{q}_max_z_m"] = val, z
-                res[f"{wall}_{kind}_{q}_max_along_m"] = along
-        for q in ("normal", "shear"):
-            res[f"{wall}_peak_{q}_Pa"] = rings.maximum(prof[f"peak_{q}_Pa"], rings.is_hopper == hop)[0]
-
-    # the shaft at rest against Janssen (K band), away from the free surface and the transition
-    depth = surface - rings.z
-    shaft = ~rings.is_hopper & (depth > 2 * d) & (rings.z > h + 2 * d)
-    lo, hi = (gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, kk, P.G)[1] for kk in P.K_JANSSEN)
-    mid = gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, sum(P.K_JANSSEN) / 2, P.G)[1]
-    meas = prof["static_normal_Pa"]
-    # Janssen's slice balance with the run's own wall shear (gc.wall_rings.slice_balance)
-    k_eff, mu_mob = gc.wall_rings.slice_balance(rings, meas, prof["static_shear_Pa"], shaft, ~rings.is_hopper,
-                                                fill["z"], fill["mass"], math.pi * P.D_SILO ** 2 / 4, P.G)
-    res.update(janssen_rings=int(shaft.sum()),
-               hydrostatic_mean_Pa=float((rho_b * P.G * depth)[shaft].mean()) if shaft.any() else math.nan,
-               K_eff=k_eff, mu_mobilised=mu_mob,
-               shaft_static_mean_Pa=float(meas[shaft].mean()) if shaft.any() else math.nan,
-               janssen_lo_mean_Pa=float(lo[shaft].mean()) if shaft.any() else math.nan,
-               janssen_hi_mean_Pa=float(hi[shaft].mean()) if shaft.any() else math.nan,
-               shaft_static_over_janssen_mid=float(meas[shaft].mean() / mid[shaft].mean()) if shaft.any() else math.nan)
-    sel = ~rings.is_hopper
-    order = np.argsort(depth[sel])
-    res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(P.janssen_depth(v["GRAINS"]), depth[sel][order], meas[sel][order],
-                                                                left=math.nan, right=math.nan))
+    res.update(gc.silo_walls.maxima(rings, prof, [("hopper", rings.is_hopper), ("shaft", ~rings.is_hopper)]))
+    # the shaft at rest against Janssen (K band), away from the free surface and the transition,
+    # and Janssen's slice balance with the run's own wall shear
+    band = ~rings.is_hopper & (surface - rings.z > 2 * d) & (rings.z > h + 2 * d)
+    jan, depth = gc.silo_walls.janssen_shaft(rings, prof, ~rings.is_hopper, band, surface, P.D_SILO, rho_b, P.MU_PW,
+                                             P.K_JANSSEN, fill["z"], fill["mass"], P.janssen_depth(v["GRAINS"]), P.G)
+    res.update(jan)
 
     # strain invariants over the outlet (gc.strain: the convex hull of the grains in the control volume)
     rows = gc.strain.series(gc.dem.snapshots(os.path.join(pdir, "cv_*.dump")), P.CV_RADIUS, P.CV_HEIGHT)
@@ -193,14 +166,10 @@ def angle(out, a, runs, seeds, size, run_root):
     # the mean wall loads per element, on the first run's mesh, for ParaView
     first = os.path.join(run_root, runs[0]["run"], "post", "walls_fill.vtk")
     if os.path.exists(first):
-        mesh = gc.dem.read_mesh_vtk(first)
         els = [gc.series.read_csv(p) for p in per_run("elements")]
-        pts, tri = gc.dem.merge_points(mesh)
         for state in ("static", "discharge"):
-            gc.dem.write_mesh_vtk(os.path.join(adir, f"wall_loads_{state}.vtk"), pts, tri,
-                                  {f"{q}_Pa": np.mean([e[f"{state}_{q}_Pa"] for e in els], axis=0)
-                                   for q in ("normal", "shear")},
-                                  f"corn silo {a} deg: {state} wall loads [Pa], mean of {len(runs)} runs")
+            gc.silo_walls.mean_vtk(first, els, os.path.join(adir, f"wall_loads_{state}.vtk"), state,
+                                   f"corn silo {a} deg: {state} wall loads [Pa], mean of {len(runs)} runs")
     with open(os.path.join(adir, "mean.json"), "w") as fh:
         json.dump(res, fh, indent=1, default=float)
     return res

@@ -30,6 +30,8 @@
     phi_i       phi = a1 / (1 + a2 I) over CG points: the figure and the fits' text file
     chunk_inputs  a LIGGGHTS run as one input file per chunk, run in turn (resumable), and the fill it starts from
     linear_contact  the linear spring-dashpot: contact time, damping ratio, LIGGGHTS' gamman from a restitution
+    silo_walls  a silo's ring wall loads: profiles at rest and discharging, each wall's maximum, the shaft against Janssen, mean VTK, the outline
+    layered_fill  a silo filled in layers: the LIGGGHTS insert/pack block, each layer just above the rest level of those below
     tables      text tables: markdown, right-aligned columns, the mean +- SD cell of repeated runs
     tally       the exact particle count of a chunked LIGGGHTS discharge with a feed, an outlet counter and a sink
 
@@ -45,4 +47,4 @@ class CaseError(Exception):
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
-from . import tally, tables, cg_slab, phi_i, chunk_inputs, linear_contact  # noqa: E402,F401
+from . import tally, tables, cg_slab, phi_i, chunk_inputs, linear_contact, silo_walls, layered_fill  # noqa: E402,F401

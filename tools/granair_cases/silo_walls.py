@@ -1,0 +1,94 @@
+"""The wall loads of a silo measured per ring of wall elements (gc.wall_rings on
+LIGGGHTS' mesh stress dumps, cases/corn-silo): the ring profiles at rest and while
+discharging, the largest load of each wall and where, the shaft at rest against
+Janssen (1895), the mean loads of repeated runs as VTK, and the silo's outline in a
+figure. Why here: none of it depends on what the grains are or how the hopper is
+meshed, only on the rings and which of them make each wall.
+
+    prof, elements = profiles(rings, fill_vtk, files, steady)
+    res = maxima(rings, prof, [("hopper", is_hopper), ("shaft", ~is_hopper)])
+    res, depth = janssen_shaft(rings, prof, wall, band, surface, D, rho_b, mu_w, k_band, z, mass, at_depth)
+    mean_vtk(mesh_vtk, tables, path, state, title)
+    outline(ax, r_outlet, R, h, top, lw=1)
+"""
+import math
+
+import numpy as np
+
+from . import closed_forms, dem, wall_rings
+
+G = 9.81
+
+
+def profiles(rings, fill_vtk, files, steady):
+    """The ring-mean loads [Pa]: at rest (the fill's dump), the mean of the steady dumps
+    of the discharge and the largest instant of all of them, normal and shear:
+    ({static|discharge|peak}_{normal|shear}_Pa: per ring}, (the fill's element normal and
+    shear, the steady element means normal and shear)). files, steady: [(step, path)]
+    of the discharge's dumps (gc.wall_rings.loads)."""
+    sn, ss, _ = dem.wall_loads(fill_vtk)
+    ring_n, ring_s, el_n, el_s = wall_rings.loads(rings, files, steady)
+    i0 = len(files) - len(steady)
+    prof = dict(static_normal_Pa=rings.mean(sn), static_shear_Pa=rings.mean(ss),
+                discharge_normal_Pa=ring_n[i0:].mean(axis=0), discharge_shear_Pa=ring_s[i0:].mean(axis=0),
+                peak_normal_Pa=ring_n.max(axis=0), peak_shear_Pa=ring_s.max(axis=0))
+    return prof, (sn, ss, el_n, el_s)
+
+
+def maxima(rings, prof, walls):
+    """For each (name, rings of that wall): the largest ring-mean load at rest and in the
+    discharge, its height and its distance along the wall (<name>_<state>_<q>_max_Pa,
+    _max_z_m, _max_along_m), and the largest instant (<name>_peak_<q>_Pa)."""
+    res = {}
+    for wall, sel in walls:
+        for kind in ("static", "discharge"):
+            for q in ("normal", "shear"):
+                val, z, along = rings.maximum(prof[f"{kind}_{q}_Pa"], sel)
+                res[f"{wall}_{kind}_{q}_max_Pa"], res[f"{wall}_{kind}_{q}_max_z_m"] = val, z
+                res[f"{wall}_{kind}_{q}_max_along_m"] = along
+        for q in ("normal", "shear"):
+            res[f"{wall}_peak_{q}_Pa"] = rings.maximum(prof[f"peak_{q}_Pa"], sel)[0]
+    return res
+
+
+def janssen_shaft(rings, prof, wall, band, surface, D, rho_b, mu_w, k_band, z, mass, at_depth, g=G):
+    """The shaft at rest against Janssen: over the rings `band` (of the shaft `wall`,
+    away from the free surface and the transition) the mean measured pressure, Janssen's
+    with the lowest and the highest K of k_band and the hydrostatic rho_b g depth (K = 1,
+    no wall friction), the measured over Janssen's with the mean K, K_eff and the wall
+    friction mobilised by the slice balance with the run's own wall shear
+    (gc.wall_rings.slice_balance over the fill's particles z, mass), and the pressure
+    interpolated to at_depth below the surface. Returns (that dict, each ring's depth)."""
+    depth = surface - rings.z
+    lo, hi = (closed_forms.janssen(depth, D, rho_b, mu_w, kk, g)[1] for kk in k_band)
+    mid = closed_forms.janssen(depth, D, rho_b, mu_w, sum(k_band) / 2, g)[1]
+    meas = prof["static_normal_Pa"]
+    k_eff, mu_mob = wall_rings.slice_balance(rings, meas, prof["static_shear_Pa"], band, wall, z, mass,
+                                             math.pi * D ** 2 / 4, g)
+    some = band.any()
+    res = dict(janssen_rings=int(band.sum()),
+               hydrostatic_mean_Pa=float((rho_b * g * depth)[band].mean()) if some else math.nan,
+               K_eff=k_eff, mu_mobilised=mu_mob,
+               shaft_static_mean_Pa=float(meas[band].mean()) if some else math.nan,
+               janssen_lo_mean_Pa=float(lo[band].mean()) if some else math.nan,
+               janssen_hi_mean_Pa=float(hi[band].mean()) if some else math.nan,
+               shaft_static_over_janssen_mid=float(meas[band].mean() / mid[band].mean()) if some else math.nan)
+    order = np.argsort(depth[wall])
+    res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(at_depth, depth[wall][order], meas[wall][order],
+                                                                left=math.nan, right=math.nan))
+    return res, depth
+
+
+def mean_vtk(mesh_vtk, tables, path, state, title):
+    """The mean over runs of their per-element loads (tables with <state>_normal_Pa and
+    <state>_shear_Pa columns) on the mesh of a `dump mesh/vtk` file, as VTK for ParaView."""
+    pts, tri = dem.merge_points(dem.read_mesh_vtk(mesh_vtk))
+    dem.write_mesh_vtk(path, pts, tri, {f"{q}_Pa": np.mean([e[f"{state}_{q}_Pa"] for e in tables], axis=0)
+                                        for q in ("normal", "shear")}, title)
+
+
+def outline(ax, r_outlet, R, h, top, lw=1):
+    """A silo's section on ax: the hopper from the outlet edge (r_outlet, 0) to the
+    shaft (R, h), the shaft to `top`, both sides."""
+    for s in (-1, 1):
+        ax.plot([s * r_outlet, s * R, s * R], [0, h, top], "k-", lw=lw)
