@@ -3,8 +3,9 @@
 live in the case layer: the chunked particle balance (gc.tally), the text tables
 (gc.tables), a slab silo's CG fields (gc.cg_slab), the phi(I) fit's picture
 (gc.phi_i), the per-chunk inputs (gc.chunk_inputs), the linear spring-dashpot
-(gc.linear_contact), against hand-made logs, fields, stand-in programs and a
-numerically integrated contact. Fast (no simulation): label unit."""
+(gc.linear_contact), a silo's ring wall loads (gc.silo_walls) and its layered fill
+(gc.layered_fill), against hand-made logs, fields, meshes, stand-in programs, a
+numerically integrated contact and Janssen's closed form. Fast (no simulation): label unit."""
 import math
 import os
 import sys
@@ -210,6 +211,88 @@ class LinearContact(unittest.TestCase):
         self.assertAlmostEqual(t / t_c, 1.0, places=6)
         self.assertAlmostEqual(-v, e, places=6)
         self.assertAlmostEqual(gc.linear_contact.damping_ratio(e), gamman / (2 * math.sqrt(k / m)), places=15)
+
+
+def cylinder_rings(R=0.1, rows=5, height=0.01, sectors=24):
+    """A cylinder wall of `rows` rings `height` tall as a dump mesh/vtk mesh, and its gc.wall_rings.Rings."""
+    quads = [q for k in range(rows) for q in gc.stl_walls.revolution(R, R, k * height, (k + 1) * height, 1, sectors)]
+    pts, cells = [], []
+    for q in quads:
+        pts += q
+        cells += [np.array([len(pts) - 4, len(pts) - 3, len(pts) - 2]), np.array([len(pts) - 4, len(pts) - 2, len(pts) - 1])]
+    mesh = {"points": np.array(pts), "cells": cells}
+    z = np.array(pts)[np.array(cells)].mean(axis=1)[:, 2]
+    return mesh, gc.wall_rings.Rings(mesh, np.minimum((z / height).astype(int), rows - 1), rows), z
+
+
+class SiloWalls(unittest.TestCase):
+    def test_profiles_and_maxima_of_dumps(self):
+        mesh, rings, z = cylinder_rings()
+        pts, tri = gc.dem.merge_points(mesh)
+        with tempfile.TemporaryDirectory() as d:
+            def dump(name, scale):           # normal load 1e4 z x scale (largest at the top ring), shear 10 x scale
+                return gc.dem.write_mesh_vtk(os.path.join(d, name), pts, tri, dict(
+                    normal_stress_average=1e4 * z * scale, shear_stress_average=np.full(len(z), 10.0 * scale)))
+            files = [(s, dump(f"walls_{s}.vtk", s / 100)) for s in (100, 200, 300)]
+            prof, (sn, _, el_n, _) = gc.silo_walls.profiles(rings, dump("walls_fill.vtk", 0.5), files, files[1:])
+            np.testing.assert_allclose(prof["static_normal_Pa"], [25, 75, 125, 175, 225], rtol=1e-9)
+            np.testing.assert_allclose(prof["discharge_normal_Pa"], 2.5 * np.array([50, 150, 250, 350, 450]), rtol=1e-9)
+            np.testing.assert_allclose(prof["peak_shear_Pa"], np.full(5, 30.0), rtol=1e-9)
+            np.testing.assert_allclose(el_n, 2.5e4 * z, rtol=1e-9)              # the steady dumps' element mean
+            lower = rings.z < 0.03
+            res = gc.silo_walls.maxima(rings, prof, [("hopper", lower), ("shaft", ~lower)])
+            self.assertAlmostEqual(res["hopper_discharge_normal_max_Pa"], 625.0)
+            self.assertAlmostEqual(res["hopper_static_normal_max_z_m"], 0.025)
+            self.assertAlmostEqual(res["shaft_peak_normal_Pa"], 1350.0)
+            self.assertEqual(len(res), 2 * (2 * 2 * 3 + 2))
+            gc.silo_walls.mean_vtk(os.path.join(d, "walls_fill.vtk"), [dict(static_normal_Pa=sn, static_shear_Pa=sn),
+                                   dict(static_normal_Pa=3 * sn, static_shear_Pa=sn)], os.path.join(d, "mean.vtk"),
+                                   "static", "t")
+            np.testing.assert_allclose(gc.dem.read_mesh_vtk(os.path.join(d, "mean.vtk"))["fields"]["normal_Pa"], 2 * sn,
+                                       rtol=1e-8)
+
+    def test_janssen_shaft_of_a_janssen_wall(self):
+        # the measured pressure is Janssen's with the mean K: the ratio is 1; no wall shear: K_eff is
+        # p_w over the weight above each ring per area
+        mesh, rings, _ = cylinder_rings(R=0.075, rows=10)
+        D, rho_b, mu_w, ks, surface = 0.15, 700.0, 0.5, (0.4, 0.6), 0.1
+        depth = surface - rings.z
+        prof = dict(static_normal_Pa=gc.closed_forms.janssen(depth, D, rho_b, mu_w, 0.5, 9.81)[1],
+                    static_shear_Pa=np.zeros(rings.n))
+        wall, band = np.ones(rings.n, bool), depth > 0.02
+        zs = np.linspace(0.0005, 0.0995, 200)
+        res, dep = gc.silo_walls.janssen_shaft(rings, prof, wall, band, surface, D, rho_b, mu_w, ks, zs, np.full(200, 1e-3),
+                                               0.05)
+        np.testing.assert_allclose(dep, depth)
+        self.assertAlmostEqual(res["shaft_static_over_janssen_mid"], 1.0, places=12)
+        self.assertEqual(res["janssen_rings"], int(band.sum()))
+        self.assertTrue(res["janssen_lo_mean_Pa"] < res["shaft_static_mean_Pa"] < res["janssen_hi_mean_Pa"]
+                        < res["hydrostatic_mean_Pa"])
+        self.assertEqual(res["mu_mobilised"], 0.0)
+        self.assertAlmostEqual(res["shaft_pressure_at_janssen_depth_Pa"],
+                               float(gc.closed_forms.janssen(np.array([0.05]), D, rho_b, mu_w, 0.5, 9.81)[1][0]), delta=0.5)
+
+    def test_outline(self):
+        fig, ax = gc.plots.pyplot().subplots()
+        gc.silo_walls.outline(ax, 0.025, 0.075, 0.03, 0.2)
+        self.assertEqual([list(l.get_xdata()) for l in ax.lines], [[-0.025, -0.075, -0.075], [0.025, 0.075, 0.075]])
+
+
+class LayeredFill(unittest.TestCase):
+    def test_layers_above_the_rest_level(self):
+        # 1001 grains of 1 cm3 into D = 0.2 m on a flat floor (h = 0), regions of radius 0.09 m at 0.25:
+        # 1.001e-3 m3 / (0.25 pi 0.09^2) = 0.157 m of region, so two layers of at most 10 cm (501 + 500)
+        lines, top = gc.layered_fill.cylinder(1001, 1e-6, 0.2, 0.05, 0.0, 0.09, 0.25, 0.1, 0.6, 0.02, 100, 500)
+        regions = [ln.split() for ln in lines.splitlines() if ln.startswith("region")]
+        counts = [int(ln.split("particles_in_region ")[1].split()[0]) for ln in lines.splitlines() if "insert/pack" in ln]
+        self.assertEqual(counts, [501, 500])
+        # the first 0.02 m above the floor; the second 0.02 m above the first's 501 grains at rest at 0.6
+        self.assertAlmostEqual(float(regions[0][7]), 0.02, places=12)
+        self.assertAlmostEqual(float(regions[1][7]), 501e-6 / 0.6 / (math.pi * 0.01) + 0.02, places=5)
+        self.assertAlmostEqual(top, float(regions[1][7]) + 500e-6 / (0.25 * math.pi * 0.09 ** 2), places=5)
+        self.assertEqual([ln.split()[1] for ln in lines.splitlines() if ln.startswith("run")], ["500", "1"])
+        seeds = [int(ln.split("seed ")[1].split()[0]) for ln in lines.splitlines() if "insert/pack" in ln]
+        self.assertEqual(seeds[:2], [101, 103])                 # primes after the seed, each after the last
 
 
 if __name__ == "__main__":
