@@ -128,13 +128,9 @@ def layers(plt, out, angles, by_angle, run_root):
     for ax, (a, p) in zip(axes[0], found):
         fill, final = gc.dem.read_dump(os.path.join(p, "fill.dump")), gc.dem.read_dump(os.path.join(p, "final.dump"))
         h = P.hopper_height(a)
-        layer = {int(i): int((z - h) // P.LAYER) for i, z in zip(fill["id"], fill["z"])}
         R, top = P.D_SILO / 2, max(fill["z"]) + 0.03
         ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
-        sel = np.abs(final["y"]) < d
-        col = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
-        gc.plots.grains(fig, ax, final["x"][sel], final["z"][sel], 2 * final["radius"][sel],
-                        np.where(col, "tab:orange", "tab:blue"))
+        gc.silo_walls.layer_slice(fig, ax, fill, final, h, P.LAYER, d)
         gc.silo_walls.outline(ax, P.D_OUTLET / 2, R, h, max(fill["z"]) + 0.02)
         m = by_angle[a][0]
         t_end = by_angle[a][1][0]["discharge_s"]

@@ -87,16 +87,9 @@ def run(name, run_dir, v, state, out):
 
     # strain invariants over the outlet (gc.strain: the convex hull of the grains in the control volume)
     rows = gc.strain.series(gc.dem.snapshots(os.path.join(pdir, "cv_*.dump")), P.CV_RADIUS, P.CV_HEIGHT)
-    st = np.array(rows).reshape(-1, 13)
-    gc.series.write_csv(os.path.join(adir, f"s{k}_strain.csv"), [("t0", st[:, 0] * dt), ("t1", st[:, 1] * dt)] +
-                        [(c, st[:, i]) for i, c in enumerate(gc.strain.COLUMNS[2:], 2)], fmt="{:.6g}")
-    ss_ = st[st[:, 0] * dt >= res["steady_from_s"] - 1e-9]
-    stat = lambda col, f: float(f(ss_[:, col])) if len(ss_) else math.nan          # noqa: E731
-    res.update(strain_interval_s=P.CV_EVERY, strain_intervals=len(ss_), I1_mean=stat(5, np.mean),
-               J2_mean=stat(6, np.mean), I1_sd_time=stat(5, np.std), J2_sd_time=stat(6, np.std),
-               cv_grains_mean=stat(2, np.mean), cv_grains_lost=int(st[:, 3].sum()) if len(st) else 0)
+    res.update(strain_interval_s=P.CV_EVERY)
+    res.update(gc.strain.steady(rows, dt, res["steady_from_s"], os.path.join(adir, f"s{k}_strain.csv")))
     # the same from the CG velocity field (granairCG), beside the hull's of the time-mean strain
-    res["I1_of_mean"], res["J2_of_mean"] = gc.strain.mean_invariants(rows, res["steady_from_s"], dt)
     cg = cg_strain(run_dir, v, res["steady_from_s"], float(t[-1]))
     res.update(cg_I1=cg[0] if cg else math.nan, cg_J2=cg[1] if cg else math.nan, cg_points=cg[3] if cg else 0,
                cg_width_m=P.CG_WIDTH)
@@ -194,14 +187,7 @@ def study(out, done, angles, seeds, size, c):
     for a, (_, runs) in by_angle.items():
         for r in runs:
             check_run(c, r)
-    # the hull method against a homogeneous deformation, for which it is exact (divergence theorem)
-    rng = np.random.default_rng(7)
-    x = rng.uniform(-P.CV_RADIUS, P.CV_RADIUS, (300, 3))
-    grad = np.array([[0.010, 0.020, 0.0], [0.0, -0.030, 0.005], [0.001, 0.0, 0.020]])
-    eps = gc.strain.hull_strain(x, x @ grad.T + 0.003)[0]
-    c.near("convex-hull strain of a homogeneous deformation: largest error of a component", float(
-        np.abs(eps - 0.5 * (grad + grad.T)).max()), 0.0, 1e-12, "the surface integral is exact for a linear "
-        "displacement field (any translation drops out)")
+    gc.strain.check_hull(c, P.CV_RADIUS)     # the hull method against a homogeneous deformation
     if not by_angle:
         print("corn-silo: no finished runs to post-process", flush=True)
         return

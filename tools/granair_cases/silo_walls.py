@@ -3,13 +3,15 @@ LIGGGHTS' mesh stress dumps, cases/corn-silo): the ring profiles at rest and whi
 discharging, the largest load of each wall and where, the shaft at rest against
 Janssen (1895), the mean loads of repeated runs as VTK, and the silo's outline in a
 figure. Why here: none of it depends on what the grains are or how the hopper is
-meshed, only on the rings and which of them make each wall.
+meshed, only on the rings and which of them make each wall; and the silo in a figure:
+its outline, the layers of its fill at the end of a discharge.
 
     prof, elements = profiles(rings, fill_vtk, files, steady)
     res = maxima(rings, prof, [("hopper", is_hopper), ("shaft", ~is_hopper)])
     res, depth = janssen_shaft(rings, prof, wall, band, surface, D, rho_b, mu_w, k_band, z, mass, at_depth)
     mean_vtk(mesh_vtk, tables, path, state, title)
     outline(ax, r_outlet, R, h, top, lw=1)
+    layer_slice(fig, ax, fill, final, floor, thickness, half_width)
 """
 import math
 
@@ -92,3 +94,15 @@ def outline(ax, r_outlet, R, h, top, lw=1):
     shaft (R, h), the shaft to `top`, both sides."""
     for s in (-1, 1):
         ax.plot([s * r_outlet, s * R, s * R], [0, h, top], "k-", lw=lw)
+
+
+def layer_slice(fig, ax, fill, final, floor, thickness, half_width, colours=("tab:blue", "tab:orange")):
+    """The flow pattern as coloured layers: the particles of the slice |y| < half_width at
+    the end (`final`, a dump with id x y z radius) drawn at their size (gc.plots.grains),
+    coloured alternately by the layer `thickness` thick above `floor` each was in at rest
+    (`fill`, id z); set the axes' limits and aspect first."""
+    from . import plots
+    layer = {int(i): int((z - floor) // thickness) for i, z in zip(fill["id"], fill["z"])}
+    sel = np.abs(final["y"]) < half_width
+    odd = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
+    plots.grains(fig, ax, final["x"][sel], final["z"][sel], 2 * final["radius"][sel], np.where(odd, colours[1], colours[0]))

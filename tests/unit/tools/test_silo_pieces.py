@@ -4,7 +4,8 @@ live in the case layer: the chunked particle balance (gc.tally), the text tables
 (gc.tables), a slab silo's CG fields (gc.cg_slab), the phi(I) fit's picture
 (gc.phi_i), the per-chunk inputs (gc.chunk_inputs), the linear spring-dashpot
 (gc.linear_contact), a silo's ring wall loads (gc.silo_walls) and its layered fill
-(gc.layered_fill), against hand-made logs, fields, meshes, stand-in programs, a
+(gc.layered_fill), the steady summary of a strain series (gc.strain.steady, check_hull),
+against hand-made logs, fields, meshes, stand-in programs, a
 numerically integrated contact and Janssen's closed form. Fast (no simulation): label unit."""
 import math
 import os
@@ -272,6 +273,18 @@ class SiloWalls(unittest.TestCase):
         self.assertAlmostEqual(res["shaft_pressure_at_janssen_depth_Pa"],
                                float(gc.closed_forms.janssen(np.array([0.05]), D, rho_b, mu_w, 0.5, 9.81)[1][0]), delta=0.5)
 
+    def test_layer_slice_colours_by_the_layer_at_rest(self):
+        fill = dict(id=np.array([1, 2, 3]), z=np.array([0.005, 0.015, 0.025]))
+        final = dict(id=np.array([1, 2, 3]), x=np.zeros(3), y=np.array([0.0, 0.0, 0.5]), z=np.zeros(3),
+                     radius=np.full(3, 0.001))
+        fig, ax = gc.plots.pyplot().subplots()
+        ax.set(xlim=(-0.1, 0.1), ylim=(-0.1, 0.1), aspect="equal")
+        gc.silo_walls.layer_slice(fig, ax, fill, final, 0.0, 0.01, 0.1)
+        col = ax.collections[0].get_facecolors()
+        self.assertEqual(len(col), 2)                           # the third is outside the slice
+        np.testing.assert_allclose(col[0][:3], gc.plots.pyplot().matplotlib.colors.to_rgb("tab:blue"))
+        np.testing.assert_allclose(col[1][:3], gc.plots.pyplot().matplotlib.colors.to_rgb("tab:orange"))
+
     def test_outline(self):
         fig, ax = gc.plots.pyplot().subplots()
         gc.silo_walls.outline(ax, 0.025, 0.075, 0.03, 0.2)
@@ -293,6 +306,26 @@ class LayeredFill(unittest.TestCase):
         self.assertEqual([ln.split()[1] for ln in lines.splitlines() if ln.startswith("run")], ["500", "1"])
         seeds = [int(ln.split("seed ")[1].split()[0]) for ln in lines.splitlines() if "insert/pack" in ln]
         self.assertEqual(seeds[:2], [101, 103])                 # primes after the seed, each after the last
+
+
+class StrainSummary(unittest.TestCase):
+    def test_steady_window_of_a_series(self):
+        cols = len(gc.strain.COLUMNS)
+        # intervals from steps 0, 100, 200, 300 (dt 1e-3 s): I1 1, 2, 3, 4; 50 grains, one lost in each
+        rows = [[s, s + 100, 50, 1, 1e-6, float(i + 1), -0.5] + [0.1 * (i + 1)] * 3 + [0.0] * 3 for i, s in
+                enumerate((0, 100, 200, 300))]
+        self.assertEqual(len(rows[0]), cols)
+        with tempfile.TemporaryDirectory() as d:
+            res = gc.strain.steady(rows, 1e-3, 0.2, os.path.join(d, "s.csv"))
+            self.assertEqual(gc.series.read_csv(os.path.join(d, "s.csv"))["t1"][-1], 0.4)
+        self.assertEqual((res["strain_intervals"], res["I1_mean"], res["I1_sd_time"], res["cv_grains_lost"]), (2, 3.5, 0.5, 4))
+        self.assertAlmostEqual(res["I1_of_mean"], 3 * 0.35)            # tr of the mean strain diag(0.35)
+        self.assertTrue(math.isnan(gc.strain.steady(rows, 1e-3, 1.0)["J2_mean"]))
+
+    def test_check_hull_passes(self):
+        c = gc.checks.Checks("t")
+        gc.strain.check_hull(c, 0.025)
+        self.assertEqual((len(c.lines), c.failed), (1, []))
 
 
 if __name__ == "__main__":
