@@ -96,13 +96,8 @@ def run(name, run_dir, v, state, out):
     res["descent_wall_over_core"], res["stagnant_mass_fraction"], res["dead_zone_wall_height_m"] = \
         gc.outlet.flow_pattern(fill, final, d, P.D_SILO / 2, h, surface, P.SINK_Z)
 
-    gc.series.write_rows(os.path.join(adir, f"s{k}_walls.csv"),
-                         [dict(wall="hopper" if rings.is_hopper[i] else "shaft", z_m=rings.z[i],
-                               along_wall_m=rings.along[i], depth_m=depth[i],
-                               **{q: float(prof[q][i]) for q in prof}) for i in range(rings.n)], fmt="{:.6g}")
-    gc.series.write_csv(os.path.join(adir, f"s{k}_elements.csv"),
-                        [("static_normal_Pa", sn), ("static_shear_Pa", ss), ("discharge_normal_Pa", el_n),
-                         ("discharge_shear_Pa", el_s)], fmt="{:.5g}")
+    gc.silo_walls.write(os.path.join(adir, f"s{k}_walls.csv"), os.path.join(adir, f"s{k}_elements.csv"), rings, prof,
+                        depth, (sn, ss, el_n, el_s), lambda i: "hopper" if rings.is_hopper[i] else "shaft")
     with open(os.path.join(adir, f"s{k}.json"), "w") as fh:
         json.dump(res, fh, indent=1, default=float)
     print(f"corn-silo {name}: W = {w:.4g} kg/s, {inserted} = {last['in_silo']} + {last['below_outlet']} + "
@@ -139,13 +134,7 @@ def angle(out, a, runs, seeds, size, run_root):
     w = gc.series.mean_sd_columns(flows, ["mass_flow_kg_s"])
     gc.series.write_csv(os.path.join(adir, "mass_flow.csv"), [("t", flows[0]["t"][:len(w["mass_flow_kg_s"])]),
                         ("mass_flow_kg_s", w["mass_flow_kg_s"]), ("sd_kg_s", w["mass_flow_kg_s_sd"])], fmt="{:.6g}")
-    profs = [gc.series.read_table(p) for p in per_run("walls")]
-    cols = [c for c in profs[0][0] if c.endswith("_Pa")]
-    ms = gc.series.mean_sd_columns([{c: [row[c] for row in p] for c in cols + ["depth_m"]} for p in profs],
-                                   cols + ["depth_m"])
-    rows = [dict(wall=row["wall"], z_m=float(row["z_m"]), along_wall_m=float(row["along_wall_m"]), depth_m=ms["depth_m"][i],
-                 **{k: ms[c + s][i] for c in cols for k, s in ((c, ""), (c[:-3] + "_sd_Pa", "_sd"))})
-            for i, row in enumerate(profs[0])]
+    rows = gc.silo_walls.mean_profiles(per_run("walls"))
     gc.series.write_rows(os.path.join(adir, "walls.csv"), rows, fmt="{:.6g}")
     res["wall_time_s"] = float(np.mean([r["wall_s"] for r in runs]))
     gc.levels.write(os.path.join(adir, "level.json"), case="corn-silo", level="cg-dem",

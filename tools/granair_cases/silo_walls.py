@@ -9,6 +9,8 @@ its outline, the layers of its fill at the end of a discharge.
     prof, elements = profiles(rings, fill_vtk, files, steady)
     res = maxima(rings, prof, [("hopper", is_hopper), ("shaft", ~is_hopper)])
     res, depth = janssen_shaft(rings, prof, wall, band, surface, D, rho_b, mu_w, k_band, z, mass, at_depth)
+    write(walls_csv, elements_csv, rings, prof, depth, elements, wall_of)   a run's profiles and element loads
+    rows = mean_profiles(paths)                  the mean +- SD of repeated runs' profiles (their walls_csv)
     mean_vtk(mesh_vtk, tables, path, state, title)
     outline(ax, r_outlet, R, h, top, lw=1)
     layer_slice(fig, ax, fill, final, floor, thickness, half_width)
@@ -79,6 +81,31 @@ def janssen_shaft(rings, prof, wall, band, surface, D, rho_b, mu_w, k_band, z, m
     res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(at_depth, depth[wall][order], meas[wall][order],
                                                                 left=math.nan, right=math.nan))
     return res, depth
+
+
+def write(walls_csv, elements_csv, rings, prof, depth, elements, wall_of):
+    """A run's ring profiles (walls_csv: the wall wall_of(ring) names, z_m, along_wall_m,
+    depth_m, each profile of `prof` per ring) and its element loads (elements_csv: the
+    fill's normal and shear, the steady discharge means: profiles()' second result)."""
+    from .series import write_csv, write_rows
+    write_rows(walls_csv, [dict(wall=wall_of(i), z_m=rings.z[i], along_wall_m=rings.along[i], depth_m=depth[i],
+                                **{q: float(prof[q][i]) for q in prof}) for i in range(rings.n)], fmt="{:.6g}")
+    write_csv(elements_csv, [(f"{s}_{q}_Pa", e) for (s, q), e in zip(
+        (("static", "normal"), ("static", "shear"), ("discharge", "normal"), ("discharge", "shear")), elements)],
+        fmt="{:.5g}")
+
+
+def mean_profiles(paths):
+    """The mean +- SD (n - 1) of repeated runs' ring profiles (the walls_csv of write()), row
+    by row: the first run's wall, z_m and along_wall_m, the mean depth_m, each _Pa profile
+    and its SD (<name>_sd_Pa)."""
+    from .series import mean_sd_columns, read_table
+    profs = [read_table(p) for p in paths]
+    cols = [c for c in profs[0][0] if c.endswith("_Pa")]
+    ms = mean_sd_columns([{c: [row[c] for row in p] for c in cols + ["depth_m"]} for p in profs], cols + ["depth_m"])
+    return [dict(wall=row["wall"], z_m=float(row["z_m"]), along_wall_m=float(row["along_wall_m"]), depth_m=ms["depth_m"][i],
+                 **{k: ms[c + s][i] for c in cols for k, s in ((c, ""), (c[:-3] + "_sd_Pa", "_sd"))})
+            for i, row in enumerate(profs[0])]
 
 
 def mean_vtk(mesh_vtk, tables, path, state, title):

@@ -252,6 +252,25 @@ class SiloWalls(unittest.TestCase):
             np.testing.assert_allclose(gc.dem.read_mesh_vtk(os.path.join(d, "mean.vtk"))["fields"]["normal_Pa"], 2 * sn,
                                        rtol=1e-8)
 
+    def test_profiles_written_and_their_mean_over_runs(self):
+        mesh, rings, _ = cylinder_rings(rows=3)
+        depth = 0.05 - rings.z
+        with tempfile.TemporaryDirectory() as d:
+            paths = []
+            for k, scale in enumerate((1.0, 3.0)):
+                prof = dict(static_normal_Pa=scale * np.array([10.0, 20.0, 30.0]), peak_shear_Pa=np.full(3, scale))
+                els = tuple(np.full(len(rings.ring), scale * j) for j in range(4))
+                paths.append(os.path.join(d, f"s{k}_walls.csv"))
+                gc.silo_walls.write(paths[-1], os.path.join(d, f"s{k}_elements.csv"), rings, prof, depth, els,
+                                    lambda i: "hopper" if i == 0 else "shaft")
+            self.assertEqual(list(gc.series.read_csv(os.path.join(d, "s1_elements.csv"))),
+                             ["static_normal_Pa", "static_shear_Pa", "discharge_normal_Pa", "discharge_shear_Pa"])
+            rows = gc.silo_walls.mean_profiles(paths)
+        self.assertEqual([r["wall"] for r in rows], ["hopper", "shaft", "shaft"])
+        self.assertEqual((rows[1]["static_normal_Pa"], rows[1]["static_normal_sd_Pa"]), (40.0, math.sqrt(800.0)))
+        self.assertEqual(list(rows[2])[-2:], ["peak_shear_Pa", "peak_shear_sd_Pa"])
+        self.assertAlmostEqual(rows[2]["depth_m"], 0.025)
+
     def test_janssen_shaft_of_a_janssen_wall(self):
         # the measured pressure is Janssen's with the mean K: the ratio is 1; no wall shear: K_eff is
         # p_w over the weight above each ring per area
