@@ -105,29 +105,24 @@ def cg_fields(v, L, run):
 
 def run(v, L, run_dir, fill, out):
     """Post-process one finished run into out/<geom>.json, _flow.csv, _cg.csv
-    (skipped if its json exists and is newer than the run's last chunk)."""
+    (gc.chunk_inputs.post_once: kept while its json is newer than the run's last chunk)."""
     name = silo.geometry_name(L)
     os.makedirs(out, exist_ok=True)
-    js = os.path.join(out, f"{name}.json")
-    cost = gc.chunk_inputs.cost(run_dir)
-    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(gc.chunk_inputs.record_file(run_dir)):
-        with open(js) as fh:
-            return json.load(fh)
-    acc = accounting(v, run_dir, fill)
-    q, (tc, series) = flow(v, L, run_dir, acc["t_end"])
-    gc.series.write_csv(os.path.join(out, f"{name}_flow.csv"), [("t", tc), ("mass_flow_kg_s", series)], fmt="{:.6g}")
-    r = dict(friction=v["FRICTION"], geometry=name, L_mm=None if L == P.SINGLE else L, size=v["SIZE"],
-             openings_m=P.openings(L), accounting=acc, flow=q,
-             cost=dict(cost, total_cpu_s=round(sum(c["cpu_s"] for c in cost.values()), 1)),
-             fill_cost=silo.fill_cost(fill), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
-    if v["CG"]:
-        cg, cols = cg_fields(v, L, run_dir)
-        gc.series.write_csv(os.path.join(out, f"{name}_cg.csv"), cols, fmt="{:.6g}")
-        r["cg"] = cg
-    with open(js, "w") as fh:
-        json.dump(r, fh, indent=1)
-    return r
 
+    def post():
+        cost = gc.chunk_inputs.cost(run_dir)
+        acc = accounting(v, run_dir, fill)
+        q, (tc, series) = flow(v, L, run_dir, acc["t_end"])
+        gc.series.write_csv(os.path.join(out, f"{name}_flow.csv"), [("t", tc), ("mass_flow_kg_s", series)], fmt="{:.6g}")
+        r = dict(friction=v["FRICTION"], geometry=name, L_mm=None if L == P.SINGLE else L, size=v["SIZE"],
+                 openings_m=P.openings(L), accounting=acc, flow=q,
+                 cost=dict(cost, total_cpu_s=round(sum(c["cpu_s"] for c in cost.values()), 1)),
+                 fill_cost=silo.fill_cost(fill), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
+        if v["CG"]:
+            r["cg"], cols = cg_fields(v, L, run_dir)
+            gc.series.write_csv(os.path.join(out, f"{name}_cg.csv"), cols, fmt="{:.6g}")
+        return r
+    return gc.chunk_inputs.post_once(os.path.join(out, f"{name}.json"), run_dir, post)
 
 
 # --- the study -------------------------------------------------------------------

@@ -10,6 +10,7 @@ fill the chunks start from run once.
     setup, simulate = stage(run, chunks, setup, progress)                 the chunks in turn
     setup, simulate = once(folder, setup, script, restart)                a fill, run once
     cost(run) / finished(run, chunks)                                     the finished chunks
+    r = post_once(path, run, fn)                                          a run's post-processing, kept
 """
 import json
 import os
@@ -64,6 +65,18 @@ def cost(run):
 
 def finished(run, chunks):
     return f"chunk_{chunks[-1][0]}" in cost(run)
+
+
+def post_once(path, run, fn):
+    """A finished run's post-processing: fn()'s dict saved at path (JSON), or the saved
+    one while it is newer than the run's record (a chunk run since makes it again)."""
+    if os.path.exists(path) and os.path.getmtime(path) >= os.path.getmtime(record_file(run)):
+        with open(path) as fh:
+            return json.load(fh)
+    r = fn()
+    with open(path, "w") as fh:
+        json.dump(r, fh, indent=1)
+    return r
 
 
 def stage(run, chunks, setup, progress=print):

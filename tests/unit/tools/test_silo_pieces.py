@@ -186,6 +186,13 @@ class ChunkInputs(unittest.TestCase):
             self.assertTrue(gc.chunk_inputs.finished(run, chunks))
             simulate()                                            # finished: nothing runs again
             self.assertEqual(len(read(os.path.join(run, "ran.txt")).split()), 3)
+            # the post-processing is kept while it is newer than the record, made again after it
+            calls, js = [], os.path.join(d, "post.json")
+            post = lambda: calls.append(1) or dict(n=len(calls))          # noqa: E731
+            self.assertEqual(gc.chunk_inputs.post_once(js, run, post), dict(n=1))
+            self.assertEqual(gc.chunk_inputs.post_once(js, run, post), dict(n=1))
+            os.utime(gc.chunk_inputs.record_file(run), (os.path.getmtime(js) + 10,) * 2)
+            self.assertEqual(gc.chunk_inputs.post_once(js, run, post), dict(n=2))
 
 
 class LinearContact(unittest.TestCase):
