@@ -14,12 +14,14 @@ its outline, the layers of its fill at the end of a discharge.
     mean_vtk(mesh_vtk, tables, path, state, title)
     outline(ax, r_outlet, R, h, top, lw=1)
     layer_slice(fig, ax, fill, final, floor, thickness, half_width)
+    layer_panels(png, runs, r_outlet, R, thickness, half_width, title)       several runs' layers side by side
+    force_chain_panels(png, runs, r_outlet, R, half_width, title)           their contact networks at rest and at the end
 """
 import math
 
 import numpy as np
 
-from . import closed_forms, dem, wall_rings
+from . import closed_forms, dem, plots, wall_rings
 
 G = 9.81
 
@@ -128,8 +130,49 @@ def layer_slice(fig, ax, fill, final, floor, thickness, half_width, colours=("ta
     the end (`final`, a dump with id x y z radius) drawn at their size (gc.plots.grains),
     coloured alternately by the layer `thickness` thick above `floor` each was in at rest
     (`fill`, id z); set the axes' limits and aspect first."""
-    from . import plots
     layer = {int(i): int((z - floor) // thickness) for i, z in zip(fill["id"], fill["z"])}
     sel = np.abs(final["y"]) < half_width
     odd = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
     plots.grains(fig, ax, final["x"][sel], final["z"][sel], 2 * final["radius"][sel], np.where(odd, colours[1], colours[0]))
+
+
+def layer_panels(path, runs, r_outlet, R, thickness, half_width, title, dpi=130):
+    """The flow pattern of several runs side by side (layer_slice, the outline): runs
+    [(panel title, fill dump, final dump, hopper height h)], each panel from the outlet
+    to 3 cm above its fill."""
+    plt = plots.pyplot()
+    fig, axes = plt.subplots(1, len(runs), figsize=(max(4.5, 2.3 * len(runs) + 0.6), 5.6), squeeze=False)
+    fig.subplots_adjust(left=0.08, right=0.98, bottom=0.08, top=0.86, wspace=0.25)
+    for ax, (label, fill, final, h) in zip(axes[0], runs):
+        ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, max(fill["z"]) + 0.03), aspect="equal")
+        layer_slice(fig, ax, fill, final, h, thickness, half_width)
+        outline(ax, r_outlet, R, h, max(fill["z"]) + 0.02)
+        ax.set_title(label, fontsize=8)
+        ax.set_xlabel("x [m]")
+        ax.tick_params(labelsize=7)
+    axes[0][0].set_ylabel("z [m]")
+    fig.suptitle(title, fontsize=9)
+    return plots.save(fig, path, dpi=dpi)
+
+
+def force_chain_panels(path, runs, r_outlet, R, half_width, title, dpi=130):
+    """The contact network (gc.plots.force_chains, the slice |y| < half_width) of several
+    runs, a column each: runs [(label, the run's pair dumps in order, dt, hopper height h,
+    top of the panel)], the first dump (at rest) above the last."""
+    plt = plots.pyplot()
+    runs = [(label, [p[0]] + ([p[-1]] if len(p) > 1 else []), dt, h, top) for label, p, dt, h, top in runs]
+    rows = max(len(p) for _, p, _, _, _ in runs)
+    fig, axes = plt.subplots(rows, len(runs), figsize=(max(4.5, 2.3 * len(runs) + 0.8), 5.2 * rows), squeeze=False)
+    for j, (label, paths, dt, h, top) in enumerate(runs):
+        for i, p in enumerate(paths):
+            (step, c), = dem.read_dumps(p)[:1]
+            ax = axes[i][j]
+            lc, mean = plots.force_chains(ax, c, half_width)
+            outline(ax, r_outlet, R, h, top, lw=0.8)
+            ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
+            ax.set_title(f"{label}, {'at rest' if step == 0 else f't = {step * dt:.2f} s'}\n"
+                         f"mean force {mean * 1e3:.0f} mN", fontsize=8)
+            ax.tick_params(labelsize=7)
+    fig.colorbar(lc, ax=axes.ravel().tolist(), fraction=0.02, pad=0.01, label="contact force / mean (stronger than the mean)")
+    fig.suptitle(title, fontsize=9)
+    return plots.save(fig, path, dpi=dpi)

@@ -221,6 +221,13 @@ class LinearContact(unittest.TestCase):
         self.assertAlmostEqual(gc.linear_contact.damping_ratio(e), gamman / (2 * math.sqrt(k / m)), places=15)
 
 
+def png_size(path):
+    """(width, height) of a PNG from its IHDR chunk."""
+    with open(path, "rb") as fh:
+        head = fh.read(24)
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
 def cylinder_rings(R=0.1, rows=5, height=0.01, sectors=24):
     """A cylinder wall of `rows` rings `height` tall as a dump mesh/vtk mesh, and its gc.wall_rings.Rings."""
     quads = [q for k in range(rows) for q in gc.stl_walls.revolution(R, R, k * height, (k + 1) * height, 1, sectors)]
@@ -310,6 +317,26 @@ class SiloWalls(unittest.TestCase):
         self.assertEqual(len(col), 2)                           # the third is outside the slice
         np.testing.assert_allclose(col[0][:3], gc.plots.pyplot().matplotlib.colors.to_rgb("tab:blue"))
         np.testing.assert_allclose(col[1][:3], gc.plots.pyplot().matplotlib.colors.to_rgb("tab:orange"))
+
+    def test_panels_of_layers_and_force_chains(self):
+        fill = dict(id=np.array([1, 2]), z=np.array([0.005, 0.015]))
+        final = dict(id=np.array([1, 2]), x=np.array([0.0, 0.01]), y=np.zeros(2), z=np.zeros(2), radius=np.full(2, 0.003))
+        cols = " ".join(f"c_pairs[{k}]" for k in range(1, 13))
+        with tempfile.TemporaryDirectory() as d:
+            dumps = []
+            for step, f in ((0, 1.0), (500, 3.0)):      # two contacts, the second three times the first's force
+                rows = [[0.0] * 12, [0.0] * 12]
+                rows[0][2], rows[0][5], rows[0][9] = 0.01, 0.02, f
+                rows[1][2], rows[1][5], rows[1][9] = 0.02, 0.03, 3 * f
+                dumps.append(write(os.path.join(d, f"pairs_{step}.dump"), f"ITEM: TIMESTEP\n{step}\nITEM: NUMBER OF ENTRIES\n2\n"
+                                   f"ITEM: BOX BOUNDS\n0 1\n0 1\n0 1\nITEM: ENTRIES {cols}\n" +
+                                   "".join(" ".join(map(str, r)) + "\n" for r in rows)))
+            png = gc.silo_walls.layer_panels(os.path.join(d, "layers.png"), [("a", fill, final, 0.01)] * 2,
+                                             0.025, 0.075, 0.01, 0.007, "t", dpi=40)
+            self.assertEqual(png_size(png)[1], round(5.6 * 40))
+            png = gc.silo_walls.force_chain_panels(os.path.join(d, "fc.png"), [("a", dumps, 1e-4, 0.01, 0.1),
+                                                   ("b", dumps[:1], 1e-4, 0.01, 0.1)], 0.025, 0.075, 0.01, "t", dpi=40)
+            self.assertEqual(png_size(png)[1], round(2 * 5.2 * 40))       # two rows: at rest and the last dump
 
     def test_outline(self):
         fig, ax = gc.plots.pyplot().subplots()
