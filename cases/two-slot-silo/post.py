@@ -56,21 +56,12 @@ def accounting(v, run, fill):
 
 # --- flow rate -------------------------------------------------------------------
 def flow(v, L, run, t_end):
-    """Mass flow through the outlet plane: 200 ms windows from the steady start
-    (mean, SD over windows), per opening (the crossings left and right of the
-    axis; one opening for the single slot), and a 20 ms series for the figures."""
+    """Mass flow through the outlet plane (gc.tally.crossing_flow): 200 ms windows from the
+    steady start (mean, SD over windows), per opening (the crossings left and right of
+    the axis; one opening for the single slot), and a 20 ms series for the figures."""
     _, t, d, x = events(run, "crossings", with_x=True)
-    m = P.RHO_P * math.pi / 6 * d ** 3
-    t0 = v["STEADY_FROM"]
-    rates = gc.outlet.window_rates(t, m, t0, t_end, P.WINDOW)       # mass flow [kg/s] in each whole window from t0
-    mean, sd = gc.outlet.mean_sd(rates)
-    sides = [np.ones_like(x, bool)] if L == P.SINGLE else [x < 0, x >= 0]
-    per = [gc.outlet.mean_sd(gc.outlet.window_rates(t[s], m[s], t0, t_end, P.WINDOW)) for s in sides]
-    edges = np.arange(0.0, t_end + 1e-9, 0.02)
-    series = np.histogram(t, edges, weights=m)[0] / 0.02
-    return dict(windows=rates.tolist(), window_start=t0, mean=mean, sd=sd, n_windows=int(rates.size),
-                per_opening_mean=[p[0] for p in per], per_opening_sd=[p[1] for p in per],
-                discharged_kg=float(m.sum())), (0.5 * (edges[1:] + edges[:-1]), series)
+    return gc.tally.crossing_flow(t, P.RHO_P * math.pi / 6 * d ** 3, v["STEADY_FROM"], t_end, P.WINDOW,
+                                  None if L == P.SINGLE else [x < 0, x >= 0], 0.02)
 
 
 # --- CG fields (gc.cg_slab) ------------------------------------------------------------

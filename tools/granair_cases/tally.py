@@ -9,6 +9,7 @@ worth anything when it is exact (integer counts, no tolerance).
     n = lost_atoms(screen)                   LIGGGHTS' "Lost atoms" warnings on a chunk's screen
     acc = balance(n_fill, n_requested, states, crossing_ids, removed_ids, pending_ids, lost)
     check(c, name, acc, n_chunks)            the six checks of the balance (gc.checks)
+    q, (tc, series) = crossing_flow(t, m, t0, t_end, width, groups, bin_width)   the outlet's flow from its records
 
 The balance: inserted (fill + fed) = in the silo + below the outlet + removed at the
 sink; crossed the outlet = below the outlet + removed; one record per crossing and
@@ -20,7 +21,7 @@ import re
 
 import numpy as np
 
-from . import CaseError
+from . import CaseError, outlet
 
 COUNTS = ("atoms", "in_silo", "outlet", "sink", "feed")
 
@@ -103,3 +104,20 @@ def check(c, name, acc, n_chunks):
     c.true(f"{name}: the particles deleted at chunk ends (counted by the sink, not yet deleted) are all "
            f"among the sink's records", acc["pending_all_removed"], f"{acc['pending_deleted']} particles",
            "massflow/mesh deletes at the next neighbour-list build")
+
+
+def crossing_flow(t, m, t0, t_end, width, groups=None, bin_width=0.02):
+    """The mass flow through an outlet from its crossing records (times t, masses m): the
+    rate in each whole window `width` long from t0 (gc.outlet.window_rates), their mean
+    and SD, the same per group of records (masks: the openings of a floor; default one
+    group of all), the mass that crossed, and a series in bins of bin_width from 0 to
+    t_end ((centres, rates): the figures' line). Returns (dict, series)."""
+    rates = outlet.window_rates(t, m, t0, t_end, width)
+    mean, sd = outlet.mean_sd(rates)
+    groups = [np.ones_like(t, bool)] if groups is None else groups
+    per = [outlet.mean_sd(outlet.window_rates(t[s], m[s], t0, t_end, width)) for s in groups]
+    edges = np.arange(0.0, t_end + 1e-9, bin_width)
+    series = np.histogram(t, edges, weights=m)[0] / bin_width
+    return dict(windows=rates.tolist(), window_start=t0, mean=mean, sd=sd, n_windows=int(rates.size),
+                per_opening_mean=[p[0] for p in per], per_opening_sd=[p[1] for p in per],
+                discharged_kg=float(m.sum())), (0.5 * (edges[1:] + edges[:-1]), series)

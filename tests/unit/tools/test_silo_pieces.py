@@ -71,6 +71,20 @@ class Tally(unittest.TestCase):
             with self.assertRaisesRegex(CaseError, r"no 'granair chunk 2 start/end' lines"):
                 gc.tally.chunk_states(logs[0], 2)
 
+    def test_crossing_flow_in_windows_per_opening_and_binned(self):
+        # 1 g crossing every 10 ms from t = 0.005 s, alternately left and right, 0.5 s of records
+        t = np.arange(0.005, 0.5, 0.01)
+        m, x = np.full(t.size, 1e-3), np.where(np.arange(t.size) % 2, 1.0, -1.0)
+        q, (tc, series) = gc.tally.crossing_flow(t, m, 0.1, 0.5, 0.2, [x < 0, x >= 0], 0.05)
+        self.assertEqual(q["n_windows"], 2)
+        np.testing.assert_allclose(q["windows"], [0.1, 0.1])                 # 20 g over 0.2 s
+        self.assertEqual(q["sd"], 0.0)
+        np.testing.assert_allclose(q["per_opening_mean"], [0.05, 0.05])
+        self.assertAlmostEqual(q["discharged_kg"], 0.05)
+        np.testing.assert_allclose(series, np.full(10, 0.1))
+        self.assertAlmostEqual(tc[0], 0.025)
+        self.assertEqual(len(gc.tally.crossing_flow(t, m, 0.1, 0.5, 0.2)[0]["per_opening_mean"]), 1)
+
     def test_lost_atoms_counts_the_warnings(self):
         with tempfile.TemporaryDirectory() as d:
             p = write(os.path.join(d, "s"), "WARNING: Lost atoms: original 5 current 5\nx\nWARNING: Lost atoms: ...\n")
