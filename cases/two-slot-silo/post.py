@@ -328,19 +328,12 @@ def plot_maps(a, f, Ls):
 
 
 def fill_density(fill, v, saved):
-    """The settled fill's bulk density: from its dump when the run folder has it
-    (and then kept in `saved`, a small file committed with the results), else
-    from `saved`, so --post-only on a checkout without the runs' dumps still
-    makes the Hagen-Beverloo rows and checks. None if neither exists."""
-    if os.path.exists(os.path.join(fill, "dem", "fill.dump")):
-        rho, top = bulk_density(fill, v)
-        gc.template.write(saved, json.dumps(dict(rho_b_kg_m3=rho, top_m=top, source="dem/fill.dump of the fill run"),
-                                            indent=1) + "\n")
-        return rho
-    if os.path.exists(saved):
-        with open(saved) as fh:
-            return json.load(fh)["rho_b_kg_m3"]
-    return None
+    """The settled fill's bulk density: from its dump when the run folder has it, else
+    from `saved` (gc.chunk_inputs.kept), so --post-only on a checkout without the runs'
+    dumps still makes the Hagen-Beverloo rows and checks. None if neither exists."""
+    d = gc.chunk_inputs.kept(saved, os.path.join(fill, "dem", "fill.dump"),
+                             lambda: dict(zip(("rho_b_kg_m3", "top_m"), bulk_density(fill, v))), "dem/fill.dump of the fill run")
+    return d and d["rho_b_kg_m3"]
 
 
 def levels(a, res, rho_b):

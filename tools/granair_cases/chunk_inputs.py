@@ -11,6 +11,7 @@ fill the chunks start from run once.
     setup, simulate = once(folder, setup, script, restart)                a fill, run once
     cost(run) / finished(run, chunks)                                     the finished chunks
     r = post_once(path, run, fn)                                          a run's post-processing, kept
+    d = kept(saved, source, measure, note)                                a run file's measure, kept for a checkout
 """
 import json
 import os
@@ -77,6 +78,20 @@ def post_once(path, run, fn):
     with open(path, "w") as fh:
         json.dump(r, fh, indent=1)
     return r
+
+
+def kept(saved, source, measure, note):
+    """measure()'s dict while the run file `source` exists, then also written to `saved` (a
+    small JSON committed with the results, `source`: note); from `saved` once the run
+    folders are gone (a clean checkout's --post-only); None if neither exists."""
+    if os.path.exists(source):
+        d = dict(measure(), source=note)
+        template.write(saved, json.dumps(d, indent=1) + "\n")
+        return d
+    if os.path.exists(saved):
+        with open(saved) as fh:
+            return json.load(fh)
+    return None
 
 
 def stage(run, chunks, setup, progress=print):

@@ -207,6 +207,13 @@ class ChunkInputs(unittest.TestCase):
             self.assertEqual(gc.chunk_inputs.post_once(js, run, post), dict(n=1))
             os.utime(gc.chunk_inputs.record_file(run), (os.path.getmtime(js) + 10,) * 2)
             self.assertEqual(gc.chunk_inputs.post_once(js, run, post), dict(n=2))
+            # a run file's measure kept beside the results, read back once the run folder is gone
+            saved, src = os.path.join(d, "res", "fill.json"), os.path.join(run, "dem", "in.chunk_0")
+            self.assertIsNone(gc.chunk_inputs.kept(saved, os.path.join(d, "none"), dict, "x"))
+            self.assertEqual(gc.chunk_inputs.kept(saved, src, lambda: dict(rho=700.5), "in.chunk_0"),
+                             dict(rho=700.5, source="in.chunk_0"))
+            os.remove(src)
+            self.assertEqual(gc.chunk_inputs.kept(saved, src, None, "x"), dict(rho=700.5, source="in.chunk_0"))
 
 
 class LinearContact(unittest.TestCase):
