@@ -117,67 +117,26 @@ def strain(plt, out, angles, means):
 
 def layers(plt, out, angles, by_angle, run_root):
     """A vertical slice |y| < d of the first run of every angle at the end of the
-    discharge, the grains coloured by the layer they were in at rest."""
+    discharge, the grains coloured by the layer they were in at rest (gc.silo_walls)."""
     found = [(a, os.path.join(run_root, f"a{a}-s1", "post")) for a in angles]
     found = [(a, p) for a, p in found if os.path.exists(os.path.join(p, "final.dump"))]
-    if not found:
-        return
-    fig, axes = plt.subplots(1, len(found), figsize=(max(4.5, 2.3 * len(found) + 0.6), 5.6), squeeze=False)
-    fig.subplots_adjust(left=0.08, right=0.98, bottom=0.08, top=0.86, wspace=0.25)
-    d = P.d_mass_mean()
-    for ax, (a, p) in zip(axes[0], found):
-        fill, final = gc.dem.read_dump(os.path.join(p, "fill.dump")), gc.dem.read_dump(os.path.join(p, "final.dump"))
-        h = P.hopper_height(a)
-        layer = {int(i): int((z - h) // P.LAYER) for i, z in zip(fill["id"], fill["z"])}
-        R, top = P.D_SILO / 2, max(fill["z"]) + 0.03
-        ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
-        sel = np.abs(final["y"]) < d
-        col = np.array([layer.get(int(i), 0) % 2 for i in final["id"][sel]], dtype=bool)
-        gc.plots.grains(fig, ax, final["x"][sel], final["z"][sel], 2 * final["radius"][sel],
-                        np.where(col, "tab:orange", "tab:blue"))
-        ro = P.D_OUTLET / 2
-        ax.plot([-ro, -R, -R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
-        ax.plot([ro, R, R], [0, h, max(fill["z"]) + 0.02], "k-", lw=1)
-        m = by_angle[a][0]
-        t_end = by_angle[a][1][0]["discharge_s"]
-        ax.set_title(f"{a} deg, t = {t_end:.2f} s\n{m['pattern']}", fontsize=8)
-        ax.set_xlabel("x [m]")
-        ax.tick_params(labelsize=7)
-    axes[0][0].set_ylabel("z [m]")
-    fig.suptitle(f"Layers {P.LAYER * 1e3:.0f} mm thick at rest,\nafter the discharge (slice |y| < d)", fontsize=9)
-    gc.plots.save(fig, os.path.join(out, "flow_pattern.png"), dpi=130)
+    if found:
+        gc.silo_walls.layer_panels(os.path.join(out, "flow_pattern.png"), [
+            (f"{a} deg, t = {by_angle[a][1][0]['discharge_s']:.2f} s\n{by_angle[a][0]['pattern']}",
+             gc.dem.read_dump(os.path.join(p, "fill.dump")), gc.dem.read_dump(os.path.join(p, "final.dump")),
+             P.hopper_height(a)) for a, p in found], P.D_OUTLET / 2, P.D_SILO / 2, P.LAYER, P.d_mass_mean(),
+            f"Layers {P.LAYER * 1e3:.0f} mm thick at rest,\nafter the discharge (slice |y| < d)")
 
 
 def force_chains(plt, out, angles, by_angle, run_root):
     """The contact network of the first run of every angle in a slice |y| < d
     (contact midpoints), at rest and at the end of the discharge: a line from
     centre to centre for every contact stronger than the mean, its width and
-    colour the force over the mean force."""
-    found = []
-    for a in angles:
-        post = os.path.join(run_root, f"a{a}-s1", "post")
-        pairs = [p for _, p in gc.dem.numbered(os.path.join(post, "pairs_*.dump"))]
-        if pairs:
-            found.append((a, [pairs[0]] + ([pairs[-1]] if len(pairs) > 1 else [])))
-    if not found:
-        return
-    rows = max(len(p) for _, p in found)
-    fig, axes = plt.subplots(rows, len(found), figsize=(max(4.5, 2.3 * len(found) + 0.8), 5.2 * rows), squeeze=False)
-    d, R = P.d_mass_mean(), P.D_SILO / 2
-    for j, (a, paths) in enumerate(found):
-        dt = by_angle[a][1][0]["dt_s"]
-        for i, path in enumerate(paths):
-            (step, c), = gc.dem.read_dumps(path)[:1]
-            ax = axes[i][j]
-            lc, mean = gc.plots.force_chains(ax, c, d)
-            h = P.hopper_height(a)
-            top = by_angle[a][0]["fill_surface_m"] + 0.02
-            ax.plot([-P.D_OUTLET / 2, -R, -R], [0, h, top], "k-", lw=0.8)
-            ax.plot([P.D_OUTLET / 2, R, R], [0, h, top], "k-", lw=0.8)
-            ax.set(xlim=(-R * 1.05, R * 1.05), ylim=(-0.02, top), aspect="equal")
-            ax.set_title(f"{a} deg, {'at rest' if step == 0 else f't = {step * dt:.2f} s'}\n"
-                         f"mean force {mean * 1e3:.0f} mN", fontsize=8)
-            ax.tick_params(labelsize=7)
-    fig.colorbar(lc, ax=axes.ravel().tolist(), fraction=0.02, pad=0.01, label="contact force / mean (stronger than the mean)")
-    fig.suptitle("Force chains (slice |y| < d, first run of each angle)", fontsize=9)
-    gc.plots.save(fig, os.path.join(out, "force_chains.png"), dpi=130)
+    colour the force over the mean force (gc.silo_walls, gc.plots.force_chains)."""
+    found = [(a, [p for _, p in gc.dem.numbered(os.path.join(run_root, f"a{a}-s1", "post", "pairs_*.dump"))])
+             for a in angles]
+    found = [(f"{a} deg", pairs, by_angle[a][1][0]["dt_s"], P.hopper_height(a), by_angle[a][0]["fill_surface_m"] + 0.02)
+             for a, pairs in found if pairs]
+    if found:
+        gc.silo_walls.force_chain_panels(os.path.join(out, "force_chains.png"), found, P.D_OUTLET / 2, P.D_SILO / 2,
+                                         P.d_mass_mean(), "Force chains (slice |y| < d, first run of each angle)")

@@ -61,16 +61,11 @@ def run(name, run_dir, v, state, out):
     gc.series.write_csv(os.path.join(adir, f"s{k}_mass_flow.csv"), [("t", centres), ("mass_flow_kg_s", rate)],
                         fmt="{:.6g}")
 
-    # wall loads: the static fill, and every dump of the discharge
+    # wall loads: the static fill, and every dump of the discharge (gc.silo_walls)
     rings = geometry.rings(gc.dem.read_mesh_vtk(os.path.join(pdir, "walls_fill.vtk")), angle)
-    sn, ss, _ = gc.dem.wall_loads(os.path.join(pdir, "walls_fill.vtk"))
     files = [(s, p) for s, p in gc.dem.numbered(os.path.join(pdir, "walls_*.vtk")) if s > 0]
     steady = [(s, p) for s, p in files if s * dt >= min(P.STEADY_FROM, 0.4 * t[-1]) - 1e-9]
-    ring_n, ring_s, el_n, el_s = gc.wall_rings.loads(rings, files, steady)
-    i0 = len(files) - len(steady)
-    prof = dict(static_normal_Pa=rings.mean(sn), static_shear_Pa=rings.mean(ss),
-                discharge_normal_Pa=ring_n[i0:].mean(axis=0), discharge_shear_Pa=ring_s[i0:].mean(axis=0),
-                peak_normal_Pa=ring_n.max(axis=0), peak_shear_Pa=ring_s.max(axis=0))
+    prof, (sn, ss, el_n, el_s) = gc.silo_walls.profiles(rings, os.path.join(pdir, "walls_fill.vtk"), files, steady)
     res = dict(run=name, angle_deg=angle, seed=v["SEED"], grains=v["GRAINS"], youngs_Pa=v["YOUNGS"], dt_s=dt,
                discharge_s=float(t[-1]), steady_from_s=min(P.STEADY_FROM, 0.4 * t[-1]), steady_mass_flow_kg_s=w,
                bulk_density_kg_m3=rho_b, fill_surface_m=surface, hopper_height_m=h,
@@ -82,61 +77,27 @@ def run(name, run_dir, v, state, out):
                accounting_closes=inserted == last["in_silo"] + last["below_outlet"] + last["removed"],
                cpu_s=state["cpu_fill_s"] + state["cpu_discharge_s"], cpu_fill_s=state["cpu_fill_s"],
                wall_s=state["wall_s"])
-    for wall, hop in (("hopper", True), ("shaft", False)):
-        for kind, key in (("static", "static"), ("discharge", "discharge")):
-            for q in ("normal", "shear"):
-                val, z, along = rings.maximum(prof[f"{key}_{q}_Pa"], rings.is_hopper == hop)
-                res[f"{wall}_{kind}_{q}_max_Pa"], res[f"{wall}_{kind}_{q}_max_z_m"] = val, z
-                res[f"{wall}_{kind}_{q}_max_along_m"] = along
-        for q in ("normal", "shear"):
-            res[f"{wall}_peak_{q}_Pa"] = rings.maximum(prof[f"peak_{q}_Pa"], rings.is_hopper == hop)[0]
-
-    # the shaft at rest against Janssen (K band), away from the free surface and the transition
-    depth = surface - rings.z
-    shaft = ~rings.is_hopper & (depth > 2 * d) & (rings.z > h + 2 * d)
-    lo, hi = (gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, kk, P.G)[1] for kk in P.K_JANSSEN)
-    mid = gc.closed_forms.janssen(depth, P.D_SILO, rho_b, P.MU_PW, sum(P.K_JANSSEN) / 2, P.G)[1]
-    meas = prof["static_normal_Pa"]
-    # Janssen's slice balance with the run's own wall shear (gc.wall_rings.slice_balance)
-    k_eff, mu_mob = gc.wall_rings.slice_balance(rings, meas, prof["static_shear_Pa"], shaft, ~rings.is_hopper,
-                                                fill["z"], fill["mass"], math.pi * P.D_SILO ** 2 / 4, P.G)
-    res.update(janssen_rings=int(shaft.sum()),
-               hydrostatic_mean_Pa=float((rho_b * P.G * depth)[shaft].mean()) if shaft.any() else math.nan,
-               K_eff=k_eff, mu_mobilised=mu_mob,
-               shaft_static_mean_Pa=float(meas[shaft].mean()) if shaft.any() else math.nan,
-               janssen_lo_mean_Pa=float(lo[shaft].mean()) if shaft.any() else math.nan,
-               janssen_hi_mean_Pa=float(hi[shaft].mean()) if shaft.any() else math.nan,
-               shaft_static_over_janssen_mid=float(meas[shaft].mean() / mid[shaft].mean()) if shaft.any() else math.nan)
-    sel = ~rings.is_hopper
-    order = np.argsort(depth[sel])
-    res["shaft_pressure_at_janssen_depth_Pa"] = float(np.interp(P.janssen_depth(v["GRAINS"]), depth[sel][order], meas[sel][order],
-                                                                left=math.nan, right=math.nan))
+    res.update(gc.silo_walls.maxima(rings, prof, [("hopper", rings.is_hopper), ("shaft", ~rings.is_hopper)]))
+    # the shaft at rest against Janssen (K band), away from the free surface and the transition,
+    # and Janssen's slice balance with the run's own wall shear
+    band = ~rings.is_hopper & (surface - rings.z > 2 * d) & (rings.z > h + 2 * d)
+    jan, depth = gc.silo_walls.janssen_shaft(rings, prof, ~rings.is_hopper, band, surface, P.D_SILO, rho_b, P.MU_PW,
+                                             P.K_JANSSEN, fill["z"], fill["mass"], P.janssen_depth(v["GRAINS"]), P.G)
+    res.update(jan)
 
     # strain invariants over the outlet (gc.strain: the convex hull of the grains in the control volume)
     rows = gc.strain.series(gc.dem.snapshots(os.path.join(pdir, "cv_*.dump")), P.CV_RADIUS, P.CV_HEIGHT)
-    st = np.array(rows).reshape(-1, 13)
-    gc.series.write_csv(os.path.join(adir, f"s{k}_strain.csv"), [("t0", st[:, 0] * dt), ("t1", st[:, 1] * dt)] +
-                        [(c, st[:, i]) for i, c in enumerate(gc.strain.COLUMNS[2:], 2)], fmt="{:.6g}")
-    ss_ = st[st[:, 0] * dt >= res["steady_from_s"] - 1e-9]
-    stat = lambda col, f: float(f(ss_[:, col])) if len(ss_) else math.nan          # noqa: E731
-    res.update(strain_interval_s=P.CV_EVERY, strain_intervals=len(ss_), I1_mean=stat(5, np.mean),
-               J2_mean=stat(6, np.mean), I1_sd_time=stat(5, np.std), J2_sd_time=stat(6, np.std),
-               cv_grains_mean=stat(2, np.mean), cv_grains_lost=int(st[:, 3].sum()) if len(st) else 0)
+    res.update(strain_interval_s=P.CV_EVERY)
+    res.update(gc.strain.steady(rows, dt, res["steady_from_s"], os.path.join(adir, f"s{k}_strain.csv")))
     # the same from the CG velocity field (granairCG), beside the hull's of the time-mean strain
-    res["I1_of_mean"], res["J2_of_mean"] = gc.strain.mean_invariants(rows, res["steady_from_s"], dt)
     cg = cg_strain(run_dir, v, res["steady_from_s"], float(t[-1]))
     res.update(cg_I1=cg[0] if cg else math.nan, cg_J2=cg[1] if cg else math.nan, cg_points=cg[3] if cg else 0,
                cg_width_m=P.CG_WIDTH)
     res["descent_wall_over_core"], res["stagnant_mass_fraction"], res["dead_zone_wall_height_m"] = \
         gc.outlet.flow_pattern(fill, final, d, P.D_SILO / 2, h, surface, P.SINK_Z)
 
-    gc.series.write_rows(os.path.join(adir, f"s{k}_walls.csv"),
-                         [dict(wall="hopper" if rings.is_hopper[i] else "shaft", z_m=rings.z[i],
-                               along_wall_m=rings.along[i], depth_m=depth[i],
-                               **{q: float(prof[q][i]) for q in prof}) for i in range(rings.n)], fmt="{:.6g}")
-    gc.series.write_csv(os.path.join(adir, f"s{k}_elements.csv"),
-                        [("static_normal_Pa", sn), ("static_shear_Pa", ss), ("discharge_normal_Pa", el_n),
-                         ("discharge_shear_Pa", el_s)], fmt="{:.5g}")
+    gc.silo_walls.write(os.path.join(adir, f"s{k}_walls.csv"), os.path.join(adir, f"s{k}_elements.csv"), rings, prof,
+                        depth, (sn, ss, el_n, el_s), lambda i: "hopper" if rings.is_hopper[i] else "shaft")
     with open(os.path.join(adir, f"s{k}.json"), "w") as fh:
         json.dump(res, fh, indent=1, default=float)
     print(f"corn-silo {name}: W = {w:.4g} kg/s, {inserted} = {last['in_silo']} + {last['below_outlet']} + "
@@ -173,13 +134,7 @@ def angle(out, a, runs, seeds, size, run_root):
     w = gc.series.mean_sd_columns(flows, ["mass_flow_kg_s"])
     gc.series.write_csv(os.path.join(adir, "mass_flow.csv"), [("t", flows[0]["t"][:len(w["mass_flow_kg_s"])]),
                         ("mass_flow_kg_s", w["mass_flow_kg_s"]), ("sd_kg_s", w["mass_flow_kg_s_sd"])], fmt="{:.6g}")
-    profs = [gc.series.read_table(p) for p in per_run("walls")]
-    cols = [c for c in profs[0][0] if c.endswith("_Pa")]
-    ms = gc.series.mean_sd_columns([{c: [row[c] for row in p] for c in cols + ["depth_m"]} for p in profs],
-                                   cols + ["depth_m"])
-    rows = [dict(wall=row["wall"], z_m=float(row["z_m"]), along_wall_m=float(row["along_wall_m"]), depth_m=ms["depth_m"][i],
-                 **{k: ms[c + s][i] for c in cols for k, s in ((c, ""), (c[:-3] + "_sd_Pa", "_sd"))})
-            for i, row in enumerate(profs[0])]
+    rows = gc.silo_walls.mean_profiles(per_run("walls"))
     gc.series.write_rows(os.path.join(adir, "walls.csv"), rows, fmt="{:.6g}")
     res["wall_time_s"] = float(np.mean([r["wall_s"] for r in runs]))
     gc.levels.write(os.path.join(adir, "level.json"), case="corn-silo", level="cg-dem",
@@ -193,14 +148,10 @@ def angle(out, a, runs, seeds, size, run_root):
     # the mean wall loads per element, on the first run's mesh, for ParaView
     first = os.path.join(run_root, runs[0]["run"], "post", "walls_fill.vtk")
     if os.path.exists(first):
-        mesh = gc.dem.read_mesh_vtk(first)
         els = [gc.series.read_csv(p) for p in per_run("elements")]
-        pts, tri = gc.dem.merge_points(mesh)
         for state in ("static", "discharge"):
-            gc.dem.write_mesh_vtk(os.path.join(adir, f"wall_loads_{state}.vtk"), pts, tri,
-                                  {f"{q}_Pa": np.mean([e[f"{state}_{q}_Pa"] for e in els], axis=0)
-                                   for q in ("normal", "shear")},
-                                  f"corn silo {a} deg: {state} wall loads [Pa], mean of {len(runs)} runs")
+            gc.silo_walls.mean_vtk(first, els, os.path.join(adir, f"wall_loads_{state}.vtk"), state,
+                                   f"corn silo {a} deg: {state} wall loads [Pa], mean of {len(runs)} runs")
     with open(os.path.join(adir, "mean.json"), "w") as fh:
         json.dump(res, fh, indent=1, default=float)
     return res
@@ -225,14 +176,7 @@ def study(out, done, angles, seeds, size, c):
     for a, (_, runs) in by_angle.items():
         for r in runs:
             check_run(c, r)
-    # the hull method against a homogeneous deformation, for which it is exact (divergence theorem)
-    rng = np.random.default_rng(7)
-    x = rng.uniform(-P.CV_RADIUS, P.CV_RADIUS, (300, 3))
-    grad = np.array([[0.010, 0.020, 0.0], [0.0, -0.030, 0.005], [0.001, 0.0, 0.020]])
-    eps = gc.strain.hull_strain(x, x @ grad.T + 0.003)[0]
-    c.near("convex-hull strain of a homogeneous deformation: largest error of a component", float(
-        np.abs(eps - 0.5 * (grad + grad.T)).max()), 0.0, 1e-12, "the surface integral is exact for a linear "
-        "displacement field (any translation drops out)")
+    gc.strain.check_hull(c, P.CV_RADIUS)     # the hull method against a homogeneous deformation
     if not by_angle:
         print("corn-silo: no finished runs to post-process", flush=True)
         return
@@ -260,24 +204,19 @@ def check_run(c, r):
 
 
 def table(out, rows, depth):
-    """summary.md: the results against the angle, mean +- SD of the runs."""
-    def f(r, key, scale=1.0, digits=3):
-        m, s = r[key] * scale, r[key + "_sd"] * scale
-        return f"{m:.{digits}g}" + (f" ± {s:.2g}" if math.isfinite(s) else "")
+    """summary.md: the results against the angle, mean +- SD of the runs (gc.tables)."""
+    pm = gc.tables.pm
     head = ["angle [deg]", "runs", "W [kg/s]", "hopper p max static / discharge [Pa]", "hopper tau max static / discharge [Pa]",
             "shaft p max static / discharge [Pa]", "shaft tau max static / discharge [Pa]",
             f"shaft p at {depth:g} m [Pa]", "I1 (per 0.01 s)", "J2 (per 0.01 s)", "wall/core descent",
             "stagnant mass", "pattern"]
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    for r in rows:
-        lines.append("| " + " | ".join([
-            f"{r['angle_deg']}", f"{r['runs']}", f(r, "steady_mass_flow_kg_s"),
-            f(r, "hopper_static_normal_max_Pa") + " / " + f(r, "hopper_discharge_normal_max_Pa"),
-            f(r, "hopper_static_shear_max_Pa") + " / " + f(r, "hopper_discharge_shear_max_Pa"),
-            f(r, "shaft_static_normal_max_Pa") + " / " + f(r, "shaft_discharge_normal_max_Pa"),
-            f(r, "shaft_static_shear_max_Pa") + " / " + f(r, "shaft_discharge_shear_max_Pa"),
-            f(r, "shaft_pressure_at_janssen_depth_Pa"), f(r, "I1_mean"), f(r, "J2_mean"),
-            f(r, "descent_wall_over_core", digits=2), f(r, "stagnant_mass_fraction", 100, 2) + " %", r["pattern"]]) + " |")
+    lines = gc.tables.markdown(head, [[
+        f"{r['angle_deg']}", f"{r['runs']}", pm(r, "steady_mass_flow_kg_s"),
+        *(pm(r, f"{w}_static_{q}_max_Pa") + " / " + pm(r, f"{w}_discharge_{q}_max_Pa")
+          for w in ("hopper", "shaft") for q in ("normal", "shear")),
+        pm(r, "shaft_pressure_at_janssen_depth_Pa"), pm(r, "I1_mean"), pm(r, "J2_mean"),
+        pm(r, "descent_wall_over_core", digits=2), pm(r, "stagnant_mass_fraction", 100, 2) + " %", r["pattern"]]
+        for r in rows])
     with open(os.path.join(out, "summary.md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
     print("\n".join(lines), flush=True)

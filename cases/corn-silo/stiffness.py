@@ -31,8 +31,7 @@ def window(out, angle, k, t0, t1):
         dt = json.load(fh)["DT"]
     flow = post.read_flow(sorted(glob.glob(os.path.join(run, "post", "flow_*.txt"))))
     t = flow["step"] * dt
-    sel = (t >= t0 - 1e-9) & (t <= t1 + 1e-9)
-    w = float(np.polyfit(t[sel], flow["discharged_kg"][sel], 1)[0])
+    w = gc.series.slope(t, flow["discharged_kg"], t0 - 1e-9, t1 + 1e-9)
     st = gc.series.read_csv(os.path.join(out, f"a{angle}", f"s{k}_strain.csv"))
     s = (st["t0"] >= t0 - 1e-9) & (st["t1"] <= t1 + 1e-6)
     return w, float(np.mean(st["I1"][s])), float(np.mean(st["J2"][s])), int(s.sum())

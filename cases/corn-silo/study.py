@@ -76,28 +76,12 @@ def numbers(grains, discharge, angle, k, youngs):
 
 
 def layers(grains, h, radii, seed, steps):
-    """The fill's insertion block: layers of LAYER_HEIGHT at INSERT_FRACTION, each
-    just above the estimated rest level of the grains below it (BULK_FRACTION),
+    """The fill's insertion block (gc.layered_fill): layers of LAYER_HEIGHT at INSERT_FRACTION,
+    each just above the estimated rest level of the grains below it (BULK_FRACTION),
     inserted LAYER_TIME apart. Returns (LIGGGHTS lines, top of the last layer)."""
-    r_ins = P.D_SILO / 2 - max(radii) - 0.001
-    area, a_ins, v = math.pi * P.D_SILO ** 2 / 4, math.pi * r_ins ** 2, P.mean_grain_volume()
-    r_o, r = P.D_OUTLET / 2, P.D_SILO / 2
-    v_hopper = math.pi * h / 3 * (r_o ** 2 + r_o * r + r ** 2)
-    n_layers = max(1, math.ceil(grains * v / (P.INSERT_FRACTION * a_ins) / P.LAYER_HEIGHT))
-    counts = [grains // n_layers + (1 if i < grains % n_layers else 0) for i in range(n_layers)]
-    lines, below, p = [], 0, seed
-    for i, n in enumerate(counts):
-        rest = h + max(0.0, below * v / P.BULK_FRACTION - v_hopper) / area
-        lo = rest + P.LAYER_GAP
-        hi = lo + n * v / (P.INSERT_FRACTION * a_ins)
-        p = gc.dem.next_prime(p + 1)
-        lines += [f"region          layer{i + 1} cylinder z 0 0 {r_ins:.6g} {lo:.6g} {hi:.6g} units box",
-                  f"fix ins{i + 1} all insert/pack seed {p} distributiontemplate pdd insert_every once overlapcheck yes "
-                  f"all_in yes particles_in_region {n} region layer{i + 1}",
-                  f"run             {steps if i < len(counts) - 1 else 1}",
-                  f"unfix           ins{i + 1}"]
-        below += n
-    return "\n".join(lines), hi
+    return gc.layered_fill.cylinder(grains, P.mean_grain_volume(), P.D_SILO, P.D_OUTLET, h,
+                                    P.D_SILO / 2 - max(radii) - 0.001, P.INSERT_FRACTION, P.LAYER_HEIGHT,
+                                    P.BULK_FRACTION, P.LAYER_GAP, seed, steps)
 
 
 def read_state(run):

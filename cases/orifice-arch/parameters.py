@@ -101,10 +101,10 @@ MASS_INTEGRAL_TOL = 1e-3          # CG: int rho dV over an enclosing window vs t
 
 def contact_law(k_n=K_N, e=RESTITUTION, m=MASS):
     """LIGGGHTS hooke/stiffness numbers for a linear spring-dashpot with restitution e
-    (gc.contact.linear_dashpot: gamman and the contact time of particle pairs, m_eff = m/2,
+    (gc.linear_contact.linear_dashpot: gamman and the contact time of particle pairs, m_eff = m/2,
     and particle-wall contacts, m_eff = m) and the DEM step: a pair's contact time /
     STEPS_PER_CONTACT."""
-    from granair_cases import contact
-    out = contact.linear_dashpot(k_n, e, m)
+    from granair_cases import linear_contact
+    out = linear_contact.linear_dashpot(k_n, e, m)
     out["dt"] = out["t_contact_pp"] / STEPS_PER_CONTACT
     return out

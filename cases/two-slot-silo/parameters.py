@@ -72,24 +72,6 @@ def mass(d):
     return RHO_P * math.pi / 6 * d ** 3
 
 
-def contact_time(m_eff, k=K_N, e=RESTITUTION):
-    """Duration of a linear spring-dashpot contact of effective mass m_eff [s]."""
-    ln = math.log(e)
-    return math.pi * math.sqrt(m_eff / k) * math.sqrt(1 + (ln / math.pi) ** 2)
-
-
-def damping_ratio(e=RESTITUTION):
-    """zeta = eta / (2 sqrt(m_eff k)) of a linear dashpot giving restitution e."""
-    ln = -math.log(e)
-    return ln / math.sqrt(math.pi ** 2 + ln ** 2)
-
-
-def gamma_per_mass(m_eff, k=K_N, e=RESTITUTION):
-    """LIGGGHTS hooke/stiffness `gamman` [1/s] (damping force = gamman m_eff v_n)
-    that gives restitution e for a contact of effective mass m_eff."""
-    return 2 * damping_ratio(e) * math.sqrt(k / m_eff)
-
-
 def openings(L_mm):
     """The openings [(x0, x1)] for a separation L [mm] (0: one slot 2 D0 wide), or SINGLE."""
     if L_mm == SINGLE:

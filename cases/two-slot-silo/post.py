@@ -20,38 +20,7 @@ def priority(L):
     return ORDER.index(L) if L in ORDER else len(ORDER)
 
 
-# --- accounting ------------------------------------------------------------------
-CHUNK_LINE = re.compile(r"^granair chunk (\d+) (start|end): time (\S+) atoms (\d+) in_silo (\d+) "
-                        r"outlet (\d+) sink (\d+) feed (\d+)", re.M)
-
-
-def chunk_states(run, k):
-    path = os.path.join(run, "log", f"chunk_{k}.liggghts")
-    with open(path) as fh:
-        found = {m.group(2): dict(t=float(m.group(3)), atoms=int(m.group(4)), in_silo=int(m.group(5)),
-                                  outlet=int(m.group(6)), sink=int(m.group(7)), feed=int(m.group(8)))
-                 for m in CHUNK_LINE.finditer(fh.read()) if int(m.group(1)) == k}
-    if set(found) != {"start", "end"}:
-        raise gc.CaseError(f"{path}: no 'granair chunk {k} start/end' lines (did the chunk finish?)")
-    return found["start"], found["end"]
-
-
-def pending(run, k):
-    """IDs of the particles the sink had counted but not yet deleted when chunk
-    k ended (template/dem/in.chunk deletes them before its restart)."""
-    path = os.path.join(run, "dem", f"pending_{k}.txt")
-    if not os.path.exists(path):
-        raise gc.CaseError(f"{path}: missing (did chunk {k} finish? runs set up before the pending deletions "
-                           f"must be run again)")
-    return [int(i) for i in gc.dem.read_dump(path)["id"]]
-
-
-def lost_warnings(run, k):
-    """LIGGGHTS' "Lost atoms" warnings on chunk k's screen (template/dem/in.chunk)."""
-    with open(os.path.join(run, "log", f"chunk_{k}.screen"), errors="replace") as fh:
-        return fh.read().count("WARNING: Lost atoms")
-
-
+# --- accounting (gc.tally) ---------------------------------------------------------
 def fill_count(fill):
     path = os.path.join(fill, "log", "fill.liggghts")
     with open(path) as fh:
@@ -70,95 +39,47 @@ def events(run, stem, with_x=False):
 
 
 def accounting(v, run, fill):
-    """Every particle: inserted (fill + feed) = in silo + below the outlet + removed;
-    discharged (crossed the outlet) = below the outlet + removed; per chunk the
-    atom count follows feed and sink exactly."""
-    n_fill, n_req = fill_count(fill)
-    feed = outlet = sink = 0
-    chunk_ok, atoms_prev, pend, lost = True, n_fill, [], 0
-    for k, _, _ in silo.chunks(v):
-        s, e = chunk_states(run, k)
-        pend += pending(run, k)
-        lost += lost_warnings(run, k)
-        df, do, ds = e["feed"] - s["feed"], e["outlet"] - s["outlet"], e["sink"] - s["sink"]
-        chunk_ok &= s["atoms"] == atoms_prev and e["atoms"] == s["atoms"] + df - ds
-        feed, outlet, sink, atoms_prev = feed + df, outlet + do, sink + ds, e["atoms"]
-    in_silo = e["in_silo"]
-    below = e["atoms"] - in_silo
-    ids, _, _ = events(run, "crossings")
-    rid, _, _ = events(run, "removed")
-    pend_ok = bool(set(pend) <= set(rid.tolist()))
-    return dict(fill=n_fill, fill_requested=n_req, fed=feed, inserted=n_fill + feed, in_silo=in_silo,
-                below_outlet=below, removed=sink, discharged=outlet, crossing_records=int(ids.size),
-                crossing_ids_unique=int(np.unique(ids).size), removed_records=int(rid.size),
-                chunks_consistent=bool(chunk_ok), pending_deleted=len(pend), pending_all_removed=pend_ok, lost_atom_warnings=lost,
-                t_end=e["t"],
-                closes=bool(n_fill + feed == in_silo + below + sink and outlet == below + sink and chunk_ok
-                            and ids.size == outlet and rid.size == sink and pend_ok))
+    """The exact balance of the run's chunks (gc.tally.balance); the ids the chunks deleted
+    at their ends are in dem/pending_<k>.txt (template/dem/in.chunk)."""
+    ks = [k for k, _, _ in silo.chunks(v)]
+    pend = []
+    for k in ks:
+        path = os.path.join(run, "dem", f"pending_{k}.txt")
+        if not os.path.exists(path):
+            raise gc.CaseError(f"{path}: missing (did chunk {k} finish? runs set up before the pending deletions "
+                               f"must be run again)")
+        pend += [int(i) for i in gc.dem.read_dump(path)["id"]]
+    return gc.tally.balance(*fill_count(fill), [gc.tally.chunk_states(os.path.join(run, "log", f"chunk_{k}.liggghts"), k)
+                                                for k in ks], events(run, "crossings")[0], events(run, "removed")[0],
+                            pend, sum(gc.tally.lost_atoms(os.path.join(run, "log", f"chunk_{k}.screen")) for k in ks))
 
 
 # --- flow rate -------------------------------------------------------------------
 def flow(v, L, run, t_end):
-    """Mass flow through the outlet plane: 200 ms windows from the steady start
-    (mean, SD over windows), per opening (the crossings left and right of the
-    axis; one opening for the single slot), and a 20 ms series for the figures."""
+    """Mass flow through the outlet plane (gc.tally.crossing_flow): 200 ms windows from the
+    steady start (mean, SD over windows), per opening (the crossings left and right of
+    the axis; one opening for the single slot), and a 20 ms series for the figures."""
     _, t, d, x = events(run, "crossings", with_x=True)
-    m = P.RHO_P * math.pi / 6 * d ** 3
-    t0 = v["STEADY_FROM"]
-    rates = gc.outlet.window_rates(t, m, t0, t_end, P.WINDOW)       # mass flow [kg/s] in each whole window from t0
-    mean, sd = gc.outlet.mean_sd(rates)
-    sides = [np.ones_like(x, bool)] if L == P.SINGLE else [x < 0, x >= 0]
-    per = [gc.outlet.mean_sd(gc.outlet.window_rates(t[s], m[s], t0, t_end, P.WINDOW)) for s in sides]
-    edges = np.arange(0.0, t_end + 1e-9, 0.02)
-    series = np.histogram(t, edges, weights=m)[0] / 0.02
-    return dict(windows=rates.tolist(), window_start=t0, mean=mean, sd=sd, n_windows=int(rates.size),
-                per_opening_mean=[p[0] for p in per], per_opening_sd=[p[1] for p in per],
-                discharged_kg=float(m.sum())), (0.5 * (edges[1:] + edges[:-1]), series)
+    return gc.tally.crossing_flow(t, P.RHO_P * math.pi / 6 * d ** 3, v["STEADY_FROM"], t_end, P.WINDOW,
+                                  None if L == P.SINGLE else [x < 0, x >= 0], 0.02)
 
 
-# --- CG fields -------------------------------------------------------------------
-def cg_run(v, run, stem, lo, hi, log, last_only=False):
-    """granairCG over the run's CG dumps (post/cg/) into <run>/cg/<stem>.csv on the window
-    lo..hi (XZ, Gaussian w = d), the four walls as planes; last_only: the last snapshot.
-    Returns (CPU seconds, the snapshots' steps)."""
-    dumps = os.path.join(run, "post", "cg")
-    steps = [s for s, _ in gc.dem.numbered(os.path.join(dumps, "particles_*.dump"))]
-    if not steps:
-        raise gc.CaseError(f"{dumps}: no CG snapshots (particles_*.dump)")
-    opts = [("particles", "post/cg/particles_*.dump"), ("pairs", "post/cg/pairs_*.dump"),
-            ("walls", "post/cg/walls_*.dump"), ("plane-wall", ["wxlo", "x", v["XLO"]]),
-            ("plane-wall", ["wxhi", "x", v["XHI"]]), ("plane-wall", ["wfront", "y", 0]),
-            ("plane-wall", ["wback", "y", v["DEPTH"]]), ("dt", v["DEM_DT"]), ("coordinates", "XZ"),
-            ("kernel", "gauss"), ("width", P.CG_WIDTH_OVER_D * P.D_MEAN), ("cutoff", P.CG_CUTOFF),
-            ("spacing", P.CG_GRID), ("min", list(lo)), ("max", list(hi)), ("threads", 1), ("format", "csv")]
-    if last_only:
-        t = steps[-1] * v["DEM_DT"]
-        opts += [("from", t * (1 - 1e-9)), ("to", t * (1 + 1e-9))]
-    return gc.cg.run(run, os.path.join("cg", stem), opts, log), steps
-
-
+# --- CG fields (gc.cg_slab) ------------------------------------------------------------
 def cg_fields(v, L, run):
     """The time-averaged XZ fields over the openings (20 snapshots), the R2
     averages above each opening, the phi(I) points of R1, and the mass check."""
-    out = os.path.join(run, "cg")
-    os.makedirs(out, exist_ok=True)
-    lo, hi = (v["XLO"], 0.0, -0.01), (v["XHI"], v["DEPTH"], P.R1_HEIGHT + 0.01)
-    cpu, steps = cg_run(v, run, "fields", lo, hi, "granairCG")
-    f = gc.series.read_csv(os.path.join(out, "fields.csv"))
-    x, z = f["x"], f["z"]
-    g, p, i_num, phi = f["shear_rate"], f["pressure"], f["inertial_number"], f["volume_fraction"]
-    # the paper's shear rate: sqrt((dx vz + dz vx)^2 + (dx vx - dz vz)^2), from the XZ gradient
-    gd = np.sqrt((f["velocity_gradient_xz"] + f["velocity_gradient_zx"]) ** 2
-                 + (f["velocity_gradient_xx"] - f["velocity_gradient_zz"]) ** 2)
-    tau = f["shear_stress"]
-    eta = np.where(gd > 0, tau / np.where(gd > 0, gd, 1), np.nan)
-    i_paper = np.where(p > 0, P.D_MEAN * gd * np.sqrt(P.RHO_P / np.where(p > 0, p, 1)), np.nan)
-    r2 = []
-    for xc in P.centres(L):
-        sel = (np.abs(x - xc) <= P.R2_HALF_WIDTH) & (z >= 0) & (z <= P.R2_HEIGHT)
-        r2.append({k: float(np.nanmean(a[sel])) for k, a in (("shear_rate", gd), ("pressure", p),
-                   ("inertial_number", i_paper), ("volume_fraction", phi), ("viscosity", eta),
-                   ("shear_rate_granairCG", g), ("inertial_number_granairCG", i_num))})
+    box, width = (v["XLO"], v["XHI"], v["DEPTH"]), P.CG_WIDTH_OVER_D * P.D_MEAN
+    grid = (v["DEM_DT"], width, P.CG_CUTOFF, P.CG_GRID)
+    os.makedirs(os.path.join(run, "cg"), exist_ok=True)
+    cpu, steps = gc.cg_slab.run(run, "fields", box, (v["XLO"], 0.0, -0.01), (v["XHI"], v["DEPTH"], P.R1_HEIGHT + 0.01),
+                                *grid, "granairCG")
+    f = gc.series.read_csv(os.path.join(run, "cg", "fields.csv"))
+    x, z, p, phi = f["x"], f["z"], f["pressure"], f["volume_fraction"]
+    gd, i_paper, eta = gc.cg_slab.fullard(f, P.D_MEAN, P.RHO_P)      # the paper's shear rate, I and eta
+    named = (("shear_rate", gd), ("pressure", p), ("inertial_number", i_paper), ("volume_fraction", phi),
+             ("viscosity", eta), ("shear_rate_granairCG", f["shear_rate"]), ("inertial_number_granairCG", f["inertial_number"]))
+    r2 = [gc.cg_slab.box_mean(named, (np.abs(x - xc) <= P.R2_HALF_WIDTH) & (z >= 0) & (z <= P.R2_HEIGHT))
+          for xc in P.centres(L)]
     # R1 for phi(I): 0-5 cm above the floor, less one kernel cutoff at the side
     # walls and below the fill height (there the kernel reaches past the
     # particles and phi drops for a reason that is not I)
@@ -167,43 +88,32 @@ def cg_fields(v, L, run):
           & np.isfinite(i_paper) & (i_paper > P.I_FIT_MIN))
     keep = ["x", "z", "velocity_x", "velocity_z", "volume_fraction", "pressure", "shear_stress"]
     cols = [(k, f[k]) for k in keep] + [("shear_rate", gd), ("inertial_number", i_paper), ("viscosity", eta)]
-    # the mass check: one snapshot on a grid that holds every kernel
-    m = 3 * P.CG_CUTOFF * P.CG_WIDTH_OVER_D * P.D_MEAN
-    lo_m, hi_m = (v["XLO"] - m, 0.0, P.SINK_Z - m), (v["XHI"] + m, v["DEPTH"], v["ZHI"] + m)
-    cpu += cg_run(v, run, "mass", lo_m, hi_m, "granairCG_mass", last_only=True)[0]
-    cg_mass, _ = gc.cg_grids.mass(gc.cg.read(os.path.join(out, "mass.csv")), depth=v["DEPTH"])
-    snap = gc.dem.read_dump(os.path.join(run, "post", "cg", f"particles_{steps[-1]}.dump"))
-    dump_mass = float(snap["mass"][(snap["y"] >= 0) & (snap["y"] <= v["DEPTH"])].sum())
+    cg_mass, dump_mass, cpu_m = gc.cg_slab.mass_check(run, box, (P.SINK_Z, v["ZHI"]), *grid, steps[-1])
     return dict(snapshots=len(steps), t_from=steps[0] * v["DEM_DT"], t_to=steps[-1] * v["DEM_DT"], r2=r2,
                 phi_I=np.column_stack([i_paper[r1], phi[r1]]).tolist(), cg_mass_kg=cg_mass,
-                particle_mass_kg=dump_mass, cpu_s=round(cpu, 1)), cols
+                particle_mass_kg=dump_mass, cpu_s=round(cpu + cpu_m, 1)), cols
 
 
 def run(v, L, run_dir, fill, out):
     """Post-process one finished run into out/<geom>.json, _flow.csv, _cg.csv
-    (skipped if its json exists and is newer than the run's last chunk)."""
+    (gc.chunk_inputs.post_once: kept while its json is newer than the run's last chunk)."""
     name = silo.geometry_name(L)
     os.makedirs(out, exist_ok=True)
-    js = os.path.join(out, f"{name}.json")
-    cost = silo.cost(run_dir)
-    if os.path.exists(js) and os.path.getmtime(js) >= os.path.getmtime(silo.record_file(run_dir)):
-        with open(js) as fh:
-            return json.load(fh)
-    acc = accounting(v, run_dir, fill)
-    q, (tc, series) = flow(v, L, run_dir, acc["t_end"])
-    gc.series.write_csv(os.path.join(out, f"{name}_flow.csv"), [("t", tc), ("mass_flow_kg_s", series)], fmt="{:.6g}")
-    r = dict(friction=v["FRICTION"], geometry=name, L_mm=None if L == P.SINGLE else L, size=v["SIZE"],
-             openings_m=P.openings(L), accounting=acc, flow=q,
-             cost=dict(cost, total_cpu_s=round(sum(c["cpu_s"] for c in cost.values()), 1)),
-             fill_cost=silo.fill_cost(fill), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
-    if v["CG"]:
-        cg, cols = cg_fields(v, L, run_dir)
-        gc.series.write_csv(os.path.join(out, f"{name}_cg.csv"), cols, fmt="{:.6g}")
-        r["cg"] = cg
-    with open(js, "w") as fh:
-        json.dump(r, fh, indent=1)
-    return r
 
+    def post():
+        cost = gc.chunk_inputs.cost(run_dir)
+        acc = accounting(v, run_dir, fill)
+        q, (tc, series) = flow(v, L, run_dir, acc["t_end"])
+        gc.series.write_csv(os.path.join(out, f"{name}_flow.csv"), [("t", tc), ("mass_flow_kg_s", series)], fmt="{:.6g}")
+        r = dict(friction=v["FRICTION"], geometry=name, L_mm=None if L == P.SINGLE else L, size=v["SIZE"],
+                 openings_m=P.openings(L), accounting=acc, flow=q,
+                 cost=dict(cost, total_cpu_s=round(sum(c["cpu_s"] for c in cost.values()), 1)),
+                 fill_cost=silo.fill_cost(fill), dem_dt_s=v["DEM_DT"], particles_fill=acc["fill"])
+        if v["CG"]:
+            r["cg"], cols = cg_fields(v, L, run_dir)
+            gc.series.write_csv(os.path.join(out, f"{name}_cg.csv"), cols, fmt="{:.6g}")
+        return r
+    return gc.chunk_inputs.post_once(os.path.join(out, f"{name}.json"), run_dir, post)
 
 
 # --- the study -------------------------------------------------------------------
@@ -239,7 +149,7 @@ def study(a, runs, geoms, c):
         for L in geoms:
             run_dir = os.path.join(runs, f, silo.geometry_name(L))
             if not os.path.exists(os.path.join(a.out, f, f"{silo.geometry_name(L)}.json")) and \
-                    os.path.exists(silo.record_file(run_dir)) and silo.finished(v, run_dir):
+                    os.path.exists(gc.chunk_inputs.record_file(run_dir)) and gc.chunk_inputs.finished(run_dir, silo.chunks(v)):
                 try:
                     run(v, L, run_dir, fill, os.path.join(a.out, f))
                 except gc.CaseError as e:
@@ -292,9 +202,7 @@ def table(a, res, rho_b):
             lo2, hi2 = hagen_beverloo(2 * P.D0, rho_b[f])
             fh.write(f"# {f}: settled bulk density {rho_b[f]:.1f} kg/m3; Hagen-Beverloo (C = {P.BEVERLOO_C}, k = 1..3): "
                      f"14 mm {lo * 1e3:.2f}-{hi * 1e3:.2f} g/s, 28 mm {lo2 * 1e3:.2f}-{hi2 * 1e3:.2f} g/s\n")
-        w = [max(len(str(x)) for x in col) for col in zip(head, *rows)]
-        for row in [head] + rows:
-            fh.write("  ".join(str(x).rjust(n) for x, n in zip(row, w)) + "\n")
+        fh.write("".join(line + "\n" for line in gc.tables.aligned([head] + rows)))
     return rows
 
 
@@ -389,31 +297,12 @@ def plot_r2(a, res):
 
 
 def plot_phi_I(a, res):
-    plt = gc.plots.pyplot()
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    lines = []
-    for f in sorted({g for g, _ in res}):
-        pts = [p for (g, _), r in res.items() if g == f and "cg" in r for p in r["cg"]["phi_I"]]
-        if not pts:
-            continue
-        i, phi = np.asarray(pts).T
-        ax.plot(i, phi, ".", ms=2, color=COLOURS[f], alpha=0.3)
-        a1, a2 = gc.fits.phi_of_I(i, phi)
-        ii = np.linspace(P.I_FIT_MIN, max(i), 50)
-        ax.plot(ii, a1 / (1 + a2 * ii), color=COLOURS[f], label=f"{f}: a1 = {a1:.3f}, a2 = {a2:.3f} ({len(pts)} points)")
-        lines.append((f, a1, a2, len(pts)))
-    ax.set(xlabel="I", ylabel="phi", title="phi against I over R1 (I > 0.05; not within 3w of the side walls), "
-                                           "fit phi = a1 / (1 + a2 I)")
-    ax.title.set_fontsize(9)
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    gc.plots.save(fig, os.path.join(a.out, "phi_I.png"), dpi=110)
-    with open(os.path.join(a.out, "phi_I_fit.txt"), "w") as fh:
-        fh.write("# phi = a1 / (1 + a2 I), least squares in phi, over R1 (0-5 cm above the floor, not within one "
-                 "kernel cutoff of the side walls) for I > 0.05, every run of the set\n")
-        for f, a1, a2, n in lines:
-            fh.write(f"{f}: a1 = {a1:.5g}, a2 = {a2:.5g}, points = {n}\n")
+    gc.phi_i.plot(os.path.join(a.out, "phi_I.png"), os.path.join(a.out, "phi_I_fit.txt"),
+                  [(f, COLOURS[f], [p for (g, _), r in res.items() if g == f and "cg" in r for p in r["cg"]["phi_I"]])
+                   for f in sorted({g for g, _ in res})], P.I_FIT_MIN,
+                  "phi against I over R1 (I > 0.05; not within 3w of the side walls), fit phi = a1 / (1 + a2 I)",
+                  "phi = a1 / (1 + a2 I), least squares in phi, over R1 (0-5 cm above the floor, not within one "
+                  "kernel cutoff of the side walls) for I > 0.05, every run of the set")
 
 
 MAPS = (("speed", "|v| [m/s]", "viridis"), ("shear_rate", "shear rate [1/s]", "magma"),
@@ -439,19 +328,12 @@ def plot_maps(a, f, Ls):
 
 
 def fill_density(fill, v, saved):
-    """The settled fill's bulk density: from its dump when the run folder has it
-    (and then kept in `saved`, a small file committed with the results), else
-    from `saved`, so --post-only on a checkout without the runs' dumps still
-    makes the Hagen-Beverloo rows and checks. None if neither exists."""
-    if os.path.exists(os.path.join(fill, "dem", "fill.dump")):
-        rho, top = bulk_density(fill, v)
-        gc.template.write(saved, json.dumps(dict(rho_b_kg_m3=rho, top_m=top, source="dem/fill.dump of the fill run"),
-                                            indent=1) + "\n")
-        return rho
-    if os.path.exists(saved):
-        with open(saved) as fh:
-            return json.load(fh)["rho_b_kg_m3"]
-    return None
+    """The settled fill's bulk density: from its dump when the run folder has it, else
+    from `saved` (gc.chunk_inputs.kept), so --post-only on a checkout without the runs'
+    dumps still makes the Hagen-Beverloo rows and checks. None if neither exists."""
+    d = gc.chunk_inputs.kept(saved, os.path.join(fill, "dem", "fill.dump"),
+                             lambda: dict(zip(("rho_b_kg_m3", "top_m"), bulk_density(fill, v))), "dem/fill.dump of the fill run")
+    return d and d["rho_b_kg_m3"]
 
 
 def levels(a, res, rho_b):
@@ -475,20 +357,7 @@ def levels(a, res, rho_b):
 def checks(a, res, rho_b, c):
     for (f, L), r in sorted(res.items(), key=lambda t: (t[0][0], priority(t[0][1]))):
         n = f"{f} {r['geometry']}"
-        acc = r["accounting"]
-        c.exact(f"{n}: particles poured = requested", acc["fill"], acc["fill_requested"], "the packing places every sphere; LIGGGHTS reads them all")
-        c.exact(f"{n}: inserted (fill + fed) = in silo + below the outlet + removed",
-                acc["inserted"], acc["in_silo"] + acc["below_outlet"] + acc["removed"], "integer counts")
-        c.exact(f"{n}: crossed the outlet = below the outlet + removed", acc["discharged"],
-                acc["below_outlet"] + acc["removed"], "integer counts: nothing passes the outlet plane uncounted")
-        c.exact(f"{n}: crossing records = crossings, removal records = removals",
-                (acc["crossing_records"], acc["removed_records"]), (acc["discharged"], acc["removed"]), "one line each")
-        c.true(f"{n}: every chunk's atom count = start + fed - removed", acc["chunks_consistent"],
-               f"{len(r['cost'])} chunks, {acc['lost_atom_warnings']} LIGGGHTS 'Lost atoms' warnings",
-               "integer counts (LIGGGHTS 3.8 warns with equal counts after a restart: template/dem/in.chunk)")
-        c.true(f"{n}: the particles deleted at chunk ends (counted by the sink, not yet deleted) are all "
-               f"among the sink's records", acc["pending_all_removed"], f"{acc['pending_deleted']} particles",
-               "massflow/mesh deletes at the next neighbour-list build")
+        gc.tally.check(c, n, r["accounting"], len(r["cost"]))
         if f in rho_b and L in (P.SINGLE, 0, 32):
             # one slot of 14 or 28 mm; at L = 32 mm (15 d) two 14 mm slots, each its own band
             lo, hi = hagen_beverloo(2 * P.D0 if L == 0 else P.D0, rho_b[f])

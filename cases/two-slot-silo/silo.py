@@ -25,7 +25,7 @@ def numbers(size, friction):
     m_mean = sum(masses) / len(masses)
     # the contact time of the lightest particle pair sets the step; the CG
     # snapshot interval a whole number of steps, so are the series and chunks
-    t_c = P.contact_time(min(masses) / 2)
+    t_c = gc.linear_contact.contact_time(min(masses) / 2, P.K_N, P.RESTITUTION)
     per_snapshot = math.ceil(P.CG_SPACING_T / (P.DT_FRACTION * t_c))
     dt = P.CG_SPACING_T / per_snapshot
     v_mean = sum(math.pi / 6 * d ** 3 for d in P.D_SIZES) / len(P.D_SIZES)
@@ -35,7 +35,7 @@ def numbers(size, friction):
     # the box holds the loose packing (which may grow by a few mm when crowded)
     z_top = max(1.25 * fill_top, height + P.FEED_HEIGHT) + P.BOX_TOP_MARGIN
     mu_pp, mu_pw = P.FRICTION[friction]
-    gn_pp, gn_pw = P.gamma_per_mass(m_mean / 2), P.gamma_per_mass(m_mean)
+    gn_pp, gn_pw = (gc.linear_contact.gamma_per_mass(m, P.K_N, P.RESTITUTION) for m in (m_mean / 2, m_mean))
     snap_steps = per_snapshot
     return dict(
         SIZE=size, FRICTION=friction, WIDTH=width, HEIGHT=height, DEPTH=P.DEPTH, N_FILL=n_fill,
@@ -55,18 +55,10 @@ def numbers(size, friction):
 
 
 def chunks(v):
-    """[(index, steps, cg)]: discharge chunks of about CHUNK_T s, whole numbers of
-    snapshot intervals, then the CG chunk (P.CG_SNAPSHOTS snapshots, the first at
-    its start) if the size has one."""
-    per = v["SNAP_STEPS"]
-    total = round(v["T_DISCHARGE"] / P.CG_SPACING_T)           # in snapshot intervals
-    n = max(1, round(v["T_DISCHARGE"] / v["CHUNK_T"]))
-    edges = [round(total * k / n) for k in range(n + 1)]
-    out = [(k, (edges[k + 1] - edges[k]) * per, False) for k in range(n)]
-    if v["CG"]:
-        # (snapshots - 1) intervals plus one step: the last snapshot is inside the run
-        out.append((n, (P.CG_SNAPSHOTS - 1) * per + 1, True))
-    return out
+    """[(index, steps, cg)]: discharge chunks of about CHUNK_T s in whole snapshot
+    intervals, then the CG chunk (gc.chunk_inputs.layout) if the size has one."""
+    return gc.chunk_inputs.layout(v["T_DISCHARGE"], v["CHUNK_T"], P.CG_SPACING_T, v["SNAP_STEPS"],
+                                  P.CG_SNAPSHOTS if v["CG"] else 0)
 
 
 def floor_quads(L, width, depth, piece=0.01):
@@ -114,27 +106,15 @@ def setup_run(v, L, run, fill):
     gc.template.write(os.path.join(dem, "outlet.stl"), gc.dem.stl("outlet", plane_quads(0.0, v["WIDTH"], v["DEPTH"])))
     gc.template.write(os.path.join(dem, "sink.stl"), gc.dem.stl("sink", plane_quads(P.SINK_Z, v["WIDTH"], v["DEPTH"])))
     with open(os.path.join(HERE, "template", "dem", "in.chunk")) as fh:
-        text = fh.read()
-    for k, steps, cg in chunks(v):
-        restart_in = os.path.relpath(os.path.join(fill, "dem", "fill.restart"), run) if k == 0 else f"dem/chunk_{k - 1}.restart"
-        cv = dict(v, CHUNK=k, N_STEPS=steps, T_CHUNK=steps * v["DEM_DT"], RESTART_IN=restart_in,
-                  RESTART_OUT=f"dem/chunk_{k}.restart", CG_EVERY=v["SNAP_STEPS"] if cg else 0,
-                  FEED_SEED=gc.dem.next_prime(v["SEED"] + 1000 * (k + 1)))
-        gc.template.write(os.path.join(dem, f"in.chunk_{k}"), gc.template.fill(text, cv, f"template/dem/in.chunk ({k})"))
+        gc.chunk_inputs.write(run, fh.read(), chunks(v), v, os.path.join(fill, "dem", "fill.restart"),
+                              "template/dem/in.chunk", lambda k: dict(FEED_SEED=gc.dem.next_prime(v["SEED"] + 1000 * (k + 1))))
     with open(os.path.join(run, "numbers.json"), "w") as fh:
         json.dump(dict(v, L=L, OPENINGS=P.openings(L), CHUNKS=chunks(v)), fh, indent=1)
 
 
 def fill_stage(v, fill):
-    """(setup, simulate) of a friction set's fill (gc.study.drive): the folder; the fill
-    with its folder, run once (gc.study.once: cost.json and its restart)."""
-    def setup():
-        setup_fill(v, gc.runner.clean(fill))
-
-    def run():
-        setup()
-        return {"cpu_s": round(gc.runner.liggghts(fill, "dem/in.fill", "fill"), 1)}
-    return setup, lambda: gc.study.once(os.path.join(fill, "cost.json"), run, [os.path.join(fill, "dem", "fill.restart")])[0]
+    """(setup, simulate) of a friction set's fill (gc.study.drive), run once (gc.chunk_inputs.once)."""
+    return gc.chunk_inputs.once(fill, lambda d: setup_fill(v, d))
 
 
 def fill_cost(fill):
@@ -147,46 +127,7 @@ def fill_cost(fill):
     return rec.get("fill", rec)
 
 
-def record_file(run):
-    """What marks a run's progress: log/discharge.json (gc.chunks), cost.json in a run of an older study.py."""
-    new, old = os.path.join(run, "log", "discharge.json"), os.path.join(run, "cost.json")
-    return old if os.path.exists(old) and not os.path.exists(new) else new
-
-
-def cost(run):
-    """{chunk_<k>: {cpu_s, wall_s, steps, cg}} of a run's finished chunks."""
-    if record_file(run).endswith("cost.json"):
-        with open(record_file(run)) as fh:
-            return json.load(fh)
-    return {f"chunk_{c['k']}": dict(cpu_s=c["cpu_s"], wall_s=round(c["wall_s"], 1), steps=c["steps"], cg=c["cg"])
-            for c in gc.chunks.record(run, "discharge")["chunks"]}
-
-
-def finished(v, run):
-    return f"chunk_{chunks(v)[-1][0]}" in cost(run)
-
-
 def run_stage(v, L, run, fill, progress=print):
-    """(setup, simulate) of one geometry's discharge (gc.study.drive): the folder; the
-    chunks in turn (gc.chunks.loop: a stopped study resumes at the chunk it was in; the
-    folder kept once one has run), returning the cost()."""
-    def setup():
-        setup_run(v, L, gc.runner.clean(run), fill)
-
-    def step(rec):
-        if len(rec["chunks"]) == len(chunks(v)):
-            return f"{len(rec['chunks'])} chunks"
-        k, steps, cg = chunks(v)[len(rec["chunks"])]
-        cpu = gc.runner.liggghts(run, f"dem/in.chunk_{k}", f"chunk_{k}")
-        if os.path.exists(os.path.join(run, "dem", f"chunk_{k - 2}.restart")):
-            os.remove(os.path.join(run, "dem", f"chunk_{k - 2}.restart"))      # no longer needed
-        progress(f"{os.path.basename(run)}: chunk {k} done, {cpu:.0f} s CPU")
-        return dict(k=k, cpu_s=round(cpu, 1), steps=steps, cg=cg)
-
-    def simulate():
-        if not os.path.exists(record_file(run)):
-            setup()
-        if not finished(v, run):        # (the record untouched: post.run keeps a newer post-processing)
-            gc.chunks.loop(run, step, "discharge")
-        return cost(run)
-    return setup, simulate
+    """(setup, simulate) of one geometry's discharge (gc.study.drive): the chunks in turn
+    (gc.chunk_inputs.stage: a stopped study resumes at the chunk it was in)."""
+    return gc.chunk_inputs.stage(run, chunks(v), lambda d: setup_run(v, L, d, fill), progress)

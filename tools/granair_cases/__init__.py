@@ -26,10 +26,17 @@
     field_maps  maps of 2-D fields, a row per run and a column per field on shared colour scales
     study       the driver of a study of many LIGGGHTS runs: fills once, resumable runs, a job pool, --setup-only, --post-only
     size_study  the DEM converged in parcel size: window rates, Beverloo's size fit over s and its pairs, its plot
+    cg_slab     CG fields of a thin slab silo between four plane walls (XZ): granairCG, Fullard's shear rate, I, eta, the mass check
+    phi_i       phi = a1 / (1 + a2 I) over CG points: the figure and the fits' text file
+    chunk_inputs  a LIGGGHTS run as one input file per chunk, run in turn (resumable), and the fill it starts from
+    linear_contact  the linear spring-dashpot: contact time, damping ratio, LIGGGHTS' gamman from a restitution, pairs and walls at once
+    silo_walls  a silo's ring wall loads: profiles at rest and discharging, each wall's maximum, the shaft against Janssen, mean VTK, the outline
+    layered_fill  a silo filled in layers: the LIGGGHTS insert/pack block, each layer just above the rest level of those below
+    tables      text tables: markdown, right-aligned columns, the mean +- SD cell of repeated runs
+    tally       the exact particle count of a chunked LIGGGHTS discharge with a feed, an outlet counter and a sink
     arch        the free-fall arch above an outlet from 2-D CG fields, three ways, and its paraboloid fit
     cg_runs     granairCG on 2-D grids: kernels, grid-aligned and enclosing windows, the kept fields, the mass record
     discharge_counts  a re-fed LIGGGHTS discharge in segments: counts with strays, window rates, the steady rate
-    contact     the linear spring-dashpot's damping and contact time from a restitution coefficient
     packing_regions  a loose packing's region: a cylinder, a box (sample and inside for dem.loose_packing)
     profile_plots  panels of a study's CG fields and rates: rates with bands, profiles at heights, maps, paraboloids
 
@@ -45,4 +52,5 @@ class CaseError(Exception):
 
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
-from . import arch, cg_runs, discharge_counts, contact, profile_plots, packing_regions  # noqa: E402,F401
+from . import tally, tables, cg_slab, phi_i, chunk_inputs, linear_contact, silo_walls, layered_fill  # noqa: E402,F401
+from . import arch, cg_runs, discharge_counts, profile_plots, packing_regions  # noqa: E402,F401

@@ -179,12 +179,16 @@ def write_keys(path, pairs, header=None):
 def read_keys(path):
     """The `key = value` lines of a summary as {key: float or str}."""
     out = {}
-    with open(path) as fh:
-        for line in fh:
-            k, sep, v = line.partition(" = ")
-            if sep and not k.startswith("#"):
-                try:
-                    out[k.strip()] = float(v)
-                except ValueError:
-                    out[k.strip()] = v.strip()
+    try:
+        with open(path) as fh:
+            lines = fh.readlines()
+    except OSError as e:                     # e.g. a post stage before its runs (not committed) exist
+        raise CaseError(f"{path}: cannot read ({e.strerror}); a finished run's summary was expected")
+    for line in lines:
+        k, sep, v = line.partition(" = ")
+        if sep and not k.startswith("#"):
+            try:
+                out[k.strip()] = float(v)
+            except ValueError:
+                out[k.strip()] = v.strip()
     return out

@@ -135,3 +135,35 @@ def cg_cylinder(case, dumps, stem, dt, radius, height, width, spacing, t0, t1, i
                         "format": "csv"}, log="granairCG")
     f = read_csv(stem + ".csv")
     return cg_mean(f, np.hypot(f["x"], f["y"]) < r, interval, f"{stem}.csv")
+
+
+def steady(rows, dt, t0, csv=None):
+    """A run's series() rows summed up over its steady window (intervals from t0 on):
+    strain_intervals, the time mean and SD of I1 and J2 of the interval strains, the
+    mean count of particles in the volume, those lost over all intervals, and I1, J2 of
+    the time-mean strain (mean_invariants); the rows written to `csv` (times in s) if
+    given. NaN means without an interval."""
+    st = np.array(rows).reshape(-1, len(COLUMNS))
+    if csv:
+        from .series import write_csv
+        write_csv(csv, [("t0", st[:, 0] * dt), ("t1", st[:, 1] * dt)] +
+                  [(c, st[:, i]) for i, c in enumerate(COLUMNS[2:], 2)], fmt="{:.6g}")
+    ss = st[st[:, 0] * dt >= t0 - 1e-9]
+    stat = lambda col, f: float(f(ss[:, col])) if len(ss) else math.nan          # noqa: E731
+    i1, j2 = mean_invariants(rows, t0, dt)
+    return dict(strain_intervals=len(ss), I1_mean=stat(5, np.mean), J2_mean=stat(6, np.mean),
+                I1_sd_time=stat(5, np.std), J2_sd_time=stat(6, np.std), cv_grains_mean=stat(2, np.mean),
+                cv_grains_lost=int(st[:, 3].sum()) if len(st) else 0, I1_of_mean=i1, J2_of_mean=j2)
+
+
+def check_hull(c, radius, seed=7):
+    """A study's check of the hull method (gc.checks.Checks c): 300 points in a cube of
+    half-width radius under a homogeneous deformation (and a translation), for which the
+    surface integral is exact."""
+    rng = np.random.default_rng(seed)
+    x = rng.uniform(-radius, radius, (300, 3))
+    grad = np.array([[0.010, 0.020, 0.0], [0.0, -0.030, 0.005], [0.001, 0.0, 0.020]])
+    eps = hull_strain(x, x @ grad.T + 0.003)[0]
+    c.near("convex-hull strain of a homogeneous deformation: largest error of a component", float(
+        np.abs(eps - 0.5 * (grad + grad.T)).max()), 0.0, 1e-12, "the surface integral is exact for a linear "
+        "displacement field (any translation drops out)")

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The case layer's discharge_counts, packing_regions and contact modules (tools/granair_cases): the step
+"""The case layer's discharge_counts, packing_regions and linear_contact modules (tools/granair_cases): the step
 counts and the segment plan; the counts of a two-segment run read from hand-made `fix print` files and logs, the
 strays of the second segment added to "removed" from its start on, its accounting
 balanced (and its checks failing one particle off); a loose packing inside a cylinder
@@ -16,7 +16,7 @@ import numpy as np
 
 import random
 
-from granair_cases import CaseError, checks, closed_forms, contact, dem, discharge_counts, packing_regions
+from granair_cases import CaseError, checks, closed_forms, dem, discharge_counts, linear_contact, packing_regions
 
 failures = []
 
@@ -109,7 +109,7 @@ check("beverloo_k slot", discharge_counts.beverloo_k(W, 0.01, d, rho_b, 0.58, 1.
 
 # the dashpot: integrate m_eff x'' = -k x - gamman m_eff x' through one contact
 k_n, e, m = 1.0e6, 0.5, 0.12
-law = contact.linear_dashpot(k_n, e, m)
+law = linear_contact.linear_dashpot(k_n, e, m)
 for kind, m_eff in (("pp", m / 2), ("pw", m)):
     gam, dt = law["gamman_" + kind], law["t_contact_" + kind] / 200000
     x, v, steps = 0.0, 1.0, 0
@@ -129,4 +129,4 @@ for kind, m_eff in (("pp", m / 2), ("pw", m)):
 if failures:
     print("\n".join(failures))
     sys.exit(1)
-print("discharge_counts, packing_regions, contact: all checks passed")
+print("discharge_counts, packing_regions, linear_contact: all checks passed")
