@@ -85,15 +85,9 @@ def packing(v, seed):
 
 
 def cone(n_phi=48, n_z=6):
-    quads = []
-    for k in range(n_z):
-        z0, z1 = P.H_CONE * k / n_z, P.H_CONE * (k + 1) / n_z
-        r0, r1 = P.R_OUT + z0 * P.TAN_CONE, P.R_OUT + z1 * P.TAN_CONE
-        for j in range(n_phi):
-            a0, a1 = 2 * math.pi * j / n_phi, 2 * math.pi * (j + 1) / n_phi
-            quads.append([(r0 * math.cos(a0), r0 * math.sin(a0), z0), (r0 * math.cos(a1), r0 * math.sin(a1), z0),
-                          (r1 * math.cos(a1), r1 * math.sin(a1), z1), (r1 * math.cos(a0), r1 * math.sin(a0), z1)])
-    return gc.dem.stl("cone", quads)
+    """The hopper's cone wall, orifice (z = 0) to the cylinder (z = H_CONE), as n_z x n_phi quads."""
+    return gc.dem.stl("cone", gc.stl_walls.revolution(P.R_OUT, P.R_OUT + P.H_CONE * P.TAN_CONE, 0.0, P.H_CONE,
+                                                       n_z, n_phi))
 
 
 def setup(a, v, fill, run):
