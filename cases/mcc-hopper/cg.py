@@ -46,13 +46,10 @@ def snapshot_steps(run):
 def grid_options(v):
     """Kernel width w = d/2, spacing h = w (the kernel's standard deviation, granairCG's default;
     w/2 cost 7 CPU-s per snapshot of the 400 g fill); r rings at (i + 1/2) h, z points on
-    multiples of h (so z = 0, the orifice plane, is a grid row)."""
+    multiples of h (so z = 0, the orifice plane, is a grid row): gc.cg_runs.aligned."""
     w = v["D"] / 2
     h = w
-    zlo = h * math.floor((P.SINK_Z - 0.005) / h) - h / 2
-    zhi = h * math.ceil(Z_TOP / h) + h / 2
-    return w, h, {"coordinates": "RZ", "axis": [0.0, 0.0], "rmax": h * math.ceil(R_WINDOW / h),
-                  "min": [-P.BOX_HALF, -P.BOX_HALF, zlo], "max": [P.BOX_HALF, P.BOX_HALF, zhi]}
+    return w, h, gc.cg_runs.aligned("RZ", h, R_WINDOW, P.SINK_Z - 0.005, Z_TOP, P.BOX_HALF, P.BOX_HALF)
 
 
 def wall_friction(run, steps, v):
