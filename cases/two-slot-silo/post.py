@@ -363,21 +363,11 @@ def checks(a, res, rho_b, c):
             lo, hi = hagen_beverloo(2 * P.D0 if L == 0 else P.D0, rho_b[f])
             k = 2 if L == 32 else 1
             c.within(f"{n}: flow rate [kg/s] in {'twice ' if k == 2 else ''}the Hagen-Beverloo band "
-                     f"x {1 / HB_WIDEN:.2g}..{HB_WIDEN:.2g}", r["flow"]["mean"], k * lo / HB_WIDEN, k * hi * HB_WIDEN,
-                     HB_WHY + (" (L = 32 mm: each opening its own band)" if k == 2 else ""))
+                     f"x {1 / P.HB_WIDEN:.2g}..{P.HB_WIDEN:.2g}", r["flow"]["mean"], k * lo / P.HB_WIDEN, k * hi * P.HB_WIDEN,
+                     P.HB_WHY + (" (L = 32 mm: each opening its own band)" if k == 2 else ""))
         if "cg" in r:
             cg = r["cg"]
             c.exact(f"{n}: CG snapshots", cg["snapshots"], P.CG_SNAPSHOTS, "20 snapshots 5 ms apart (paper)")
             c.close(f"{n}: CG mass (density integrated over the grid) = particle mass in the window",
-                    cg["cg_mass_kg"], cg["particle_mass_kg"], CG_MASS_TOL, CG_MASS_WHY)
+                    cg["cg_mass_kg"], cg["particle_mass_kg"], P.CG_MASS_TOL, P.CG_MASS_WHY)
 
-
-# The Hagen-Beverloo band (C = 0.58, k = 1..3) is for wide silos; the 15 mm
-# deep silo (7 d) loses flow to its front and back walls, which the per-unit-
-# depth form does not know (README "Results").
-HB_WIDEN = 2.0
-HB_WHY = ("Hagen-Beverloo is per unit length of a long slot; here the slot is 7 d long between two walls, "
-          "which slow the flow near them: factor 2 either way")
-CG_MASS_TOL = 1e-4
-CG_MASS_WHY = ("the dumps print 6 significant digits and the grid sum is a midpoint rule of a kernel with a "
-               "step at its cutoff (1.1 % of the peak); measured 1.7e-5 and 3.6e-5 in test runs")
