@@ -239,11 +239,18 @@ def do_run(a, b, air, work):
     wall = time.time() - t0
     if a.np > 1:
         gc.runner.run(["reconstructPar", "-withZero"], d)   # the start-time void fraction is in processor*/0
+    field_products(d, v, air)
+    return dict(cpu_s=cpu, wall_s=wall)
+
+
+def field_products(d, v, air):
+    """What the post stage reads beside the time series: the VTK fields at the field times
+    and the silo's cell centres and volumes at t = 0 (its pore volume). A pack holds the
+    run as its last chunk left it, so the post stage makes them for an unpacked run too."""
     times = ",".join(f"{t:g}" for t in field_times(v) if gc.foam.time_dir(d, t))
     gc.runner.run(["foamToVTK", "-time", times, "-fields", "(voidfraction p U)" if air else "(voidfraction)"], d)
     for func in ("writeCellCentres", "writeCellVolumes"):       # the silo's cells and volumes: its pore volume
         gc.runner.run(["postProcess", "-func", func, "-time", "0"], d, func)
-    return dict(cpu_s=cpu, wall_s=wall)
 
 
 def field_times(v):
@@ -338,6 +345,14 @@ def crewdson(w0, dpdz, rho_b):
 def post_study(a, work, res, timings, wall):
     fills, runs, series = {}, [], {}
     for b in a.b:
+        for name in ["fill"] + a.runs:     # a fill or run only packed (another machine's) is unpacked first
+            d = os.path.join(work, f"b{b}", name)
+            unpacked = packed(a, d, f"b{b}_{name}")
+            if not os.path.isdir(d):
+                raise gc.CaseError(f"{d}: no {name} folder to post-process; run --stage {'fill' if name == 'fill' else 'runs'}"
+                                   f" first, or give --pack DIR holding b{b}_{name}.tar.xz")
+            if name != "fill" and (unpacked or not os.path.exists(os.path.join(d, "0", "Cz"))):
+                field_products(d, numbers(a, b, name == "air"), name == "air")
         fills[b] = fill_stats(os.path.join(work, f"b{b}", "fill"), numbers(a, b, False))
         for r in a.runs:
             runs.append(post_run(os.path.join(work, f"b{b}", r), res, f"b{b}_{r}"))
