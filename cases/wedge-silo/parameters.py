@@ -37,6 +37,10 @@ WHOLE_T_MAX = 15.0       # [s]; the study-size b = 10 mm silo empties in ~4 s wi
 WHOLE_CHUNK = 1.0        # [s] per granairFoam call (rounded up to whole field intervals)
 EMPTY_FRACTION = 0.005   # "empty": at most this share of the parcels is left in the DEM
 STALL_TIME = 0.25        # "stopped": nothing crossed the orifice for this long [s]
+# Fill-level bands of the whole-discharge tables (whole_widths.py) [mm], and the first
+# time their rows count from [s] (the 0.1 s windows of the rate and the means are full).
+WHOLE_BANDS_MM = [(200, 250), (150, 190), (110, 140), (70, 100), (40, 60), (15, 30), (5, 12)]
+WHOLE_BANDS_FROM = 0.1
 # Rolling resistance (study.py --rolling MU_R, issue 21; off by default): the parcels
 # are smooth spheres, lactose grains are irregular. LIGGGHTS 3.8 (Debian) models
 # that need only mu_r: epsd2 (elastic-plastic spring, Iwashita & Oda 1998) and cdt

@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""The study-size whole discharges of all three widths side by side, against the fill level
+(README, "Study size over the whole discharge").
+
+Reads only what reference-study-whole/ commits, one time series per run
+(b<b>_<air|noair>.csv, written by `study.py --stage post`) and its level file
+(b<b>_<run>.level.json: steady W and window), so it needs none of the run folders, which
+are not kept. For every run and every fill-level band of parameters.py WHOLE_BANDS_MM it
+takes the rows whose fill level is in the band, from WHOLE_BANDS_FROM on (the 0.1 s
+windows are not yet full before), and averages the mass flow (granairFoam's 0.1 s
+window rate) and the 0.1 s trailing means of the outlet dp/dz and of the air pressure
+about b above the orifice. The air effect in a band is W with air / W DEM only - 1 at
+the same fill level.
+
+Writes reference-study-whole/whole_bands.csv and whole_bands.md (the README's tables)
+and whole_widths.png (mass flow against time, and mass flow, air effect, outlet dp/dz
+against the fill level).
+
+    PYTHONPATH=tools python3 cases/wedge-silo/whole_widths.py
+"""
+import os
+
+import numpy as np
+
+import granair_cases as gc
+import parameters as P
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RES = os.path.join(HERE, "reference-study-whole")
+COLOURS = {5: "tab:blue", 10: "tab:orange", 15: "tab:green"}
+
+
+def runs():
+    """{(b, air): (series with the 0.1 s means added, level file)} of the committed runs."""
+    out = {}
+    for b in (5, 10, 15):
+        for air in (True, False):
+            name = f"b{b}_{'air' if air else 'noair'}"
+            path = os.path.join(RES, f"{name}.csv")
+            if not os.path.exists(path):
+                continue
+            s = gc.series.read_csv(path)
+            for k in ("outlet_dpdz_Pa_m", "above_p_Pa"):
+                s[k + "_mean"] = gc.series.trailing_mean(s["t"], s[k], 0.1)
+            out[(b, air)] = (s, gc.levels.read(os.path.join(RES, f"{name}.level.json")))
+    return out
+
+
+def band_rows(by):
+    """One row per width and band that both runs of the width reach (or the one run)."""
+    rows = []
+    for b in sorted({b for b, _ in by}):
+        for lo, hi in P.WHOLE_BANDS_MM:
+            row = {"b_mm": b, "fill_from_mm": lo, "fill_to_mm": hi}
+            for air in (True, False):
+                if (b, air) not in by:
+                    continue
+                s, _ = by[(b, air)]
+                h = s["fill_level_m"] * 1e3
+                sel = (h >= lo) & (h <= hi) & (s["t"] >= P.WHOLE_BANDS_FROM)
+                if not sel.any():
+                    continue
+                tag = "air" if air else "noair"
+                row[f"W_{tag}_kg_s"] = float(np.mean(s["mass_flow_kg_s"][sel]))
+                row[f"duration_{tag}_s"] = float(np.sum(gc.series.step_lengths(s["t"])[sel]))
+                if air:
+                    row["outlet_dpdz_Pa_m"] = float(np.mean(s["outlet_dpdz_Pa_m_mean"][sel]))
+                    row["above_p_Pa"] = float(np.mean(s["above_p_Pa_mean"][sel]))
+            if "W_air_kg_s" in row and "W_noair_kg_s" in row:
+                row["air_effect"] = row["W_air_kg_s"] / row["W_noair_kg_s"] - 1.0
+            if len(row) > 3:
+                rows.append(row)
+    return rows
+
+
+def markdown(by, rows):
+    f = lambda r, k, fmt: fmt.format(r[k]) if k in r else "–"   # noqa: E731
+    lines = ["Steady (level files): W with air / DEM only, air effect", ""]
+    lines += gc.tables.markdown(
+        ["b [mm]", "W with air [kg/s]", "W DEM only [kg/s]", "air effect", "outlet dp/dz [Pa/m]"],
+        [[b, f"{by[(b, True)][1]['steady_mass_flow_kg_s']:.4g}" if (b, True) in by else "–",
+          f"{by[(b, False)][1]['steady_mass_flow_kg_s']:.4g}" if (b, False) in by else "–",
+          f"{by[(b, True)][1]['steady_mass_flow_kg_s'] / by[(b, False)][1]['steady_mass_flow_kg_s'] - 1:+.1%}"
+          if (b, True) in by and (b, False) in by else "–",
+          f"{by[(b, True)][1]['outlet_dpdz_Pa_m']:.0f}" if (b, True) in by else "–"]
+         for b in sorted({b for b, _ in by})])
+    lines += ["", f"Fill-level bands (rows from t = {P.WHOLE_BANDS_FROM} s, 0.1 s means)", ""]
+    lines += gc.tables.markdown(
+        ["b [mm]", "fill level [mm]", "W with air [kg/s]", "W DEM only [kg/s]", "air effect",
+         "outlet dp/dz [Pa/m]", "p about b above [Pa]"],
+        [[r["b_mm"], f"{r['fill_from_mm']}–{r['fill_to_mm']}", f(r, "W_air_kg_s", "{:.4f}"),
+          f(r, "W_noair_kg_s", "{:.4f}"), f(r, "air_effect", "{:+.0%}"), f(r, "outlet_dpdz_Pa_m", "{:.0f}"),
+          f(r, "above_p_Pa", "{:.1f}")] for r in rows])
+    return lines
+
+
+def plot(by, path):
+    plt = gc.plots.pyplot()
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8.5))
+    for (b, air), (s, _) in sorted(by.items()):
+        c, ls = COLOURS[b], "-" if air else ":"
+        label = f"b = {b} mm, {'with air' if air else 'DEM only'}"
+        axes[0, 0].plot(s["t"], s["mass_flow_kg_s"], color=c, ls=ls, lw=1.4, label=label)
+        # against the fill level: once the 0.1 s windows are full, and while a bed is left
+        late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
+        h = s["fill_level_m"][late] * 1e3
+        axes[0, 1].plot(h, s["mass_flow_kg_s"][late], color=c, ls=ls, lw=1.4, label=label)
+        if air:
+            axes[1, 1].plot(h, s["outlet_dpdz_Pa_m_mean"][late], color=c, lw=1.4, label=f"b = {b} mm")
+            if (b, False) in by:   # the DEM-only rate at the same fill level (its level falls monotonically)
+                s0 = by[(b, False)][0]
+                w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0["mass_flow_kg_s"][::-1], left=np.nan, right=np.nan)
+                axes[1, 0].plot(h, 100 * (s["mass_flow_kg_s"][late] / w0 - 1), color=c, lw=1.4, label=f"b = {b} mm")
+    titles = [("time since the shutter opened [s]", "mass flow, full 60 mm depth [kg/s]"),
+              ("fill level [mm]", "mass flow, full 60 mm depth [kg/s]"),
+              ("fill level [mm]", "air effect: W with air / W DEM only at that level - 1 [%]"),
+              ("fill level [mm]", "outlet air dp/dz [Pa/m] (0.1 s mean)")]
+    for ax, (x, y) in zip(axes.flat, titles):
+        ax.set(xlabel=x, ylabel=y)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    for ax in axes.flat[1:]:
+        ax.set_xlabel("fill level: bed height above the orifice [mm] (falls as the silo empties)")
+    axes[0, 0].set_ylim(0, None)
+    axes[0, 1].set_ylim(0, None)
+    fig.suptitle("Wedge silo, study size, whole discharges (reference-study-whole/)", fontsize=10)
+    fig.tight_layout()
+    gc.plots.save(fig, path)
+
+
+def main():
+    by = runs()
+    if not by:
+        raise gc.CaseError(f"{RES}: no b<b>_<air|noair>.csv (run study.py --size study --whole --stage post first)")
+    rows = band_rows(by)
+    gc.series.write_rows(os.path.join(RES, "whole_bands.csv"), rows, fmt="{:.6g}")
+    lines = markdown(by, rows)
+    with open(os.path.join(RES, "whole_bands.md"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    plot(by, os.path.join(RES, "whole_widths.png"))
+    print("\n".join(lines))
+    print(f"whole_widths: {RES}/whole_bands.csv, whole_bands.md, whole_widths.png")
+
+
+if __name__ == "__main__":
+    gc.cli.main(main)
