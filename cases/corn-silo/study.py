@@ -123,11 +123,8 @@ def simulate(name, run, v, out, fresh):
         shutil.rmtree(os.path.join(run, "restart"), ignore_errors=True)     # and the chunks of an earlier fill
         gc.runner.clean(os.path.join(run, "log"))
         cpu = gc.runner.liggghts(run, "dem/in.fill", "fill", "log/log.fill", screen=False)   # the screen in log/fill.log
-        with open(os.path.join(run, "log", "log.fill")) as fh:
-            settled = [ln.strip() for ln in fh if ln.startswith("granair fill: settled")]
-        if not settled:
-            raise gc.CaseError(f"{run}/log/log.fill: the fill did not report settling")
-        print(f"corn-silo {name}: {settled[-1]} ({cpu:.0f} s CPU)", flush=True)
+        settled = gc.dem.fill_report(os.path.join(run, "log", "log.fill"), "granair fill: settled")
+        print(f"corn-silo {name}: {settled} ({cpu:.0f} s CPU)", flush=True)
         return dict(cpu_fill_s=cpu)
     if read_state(run) is None:
         gc.study.once(os.path.join(run, "post", "fill.json"), fill)

@@ -219,8 +219,7 @@ def main():
         cpu[name] = gc.runner.run(cmd, d, name, np=np_, parallel=name != "fill")
         wall[name] = round(time.time() - t0)
         if name == "fill":
-            with open(os.path.join(fill, "log", "log.liggghts")) as fh:
-                print([ln for ln in fh if ln.startswith("granair fill:")][-1].strip(), flush=True)
+            print(gc.dem.fill_report(os.path.join(fill, "log", "log.liggghts")), flush=True)
     c = gc.checks.Checks("mcc-hopper cg-dem")
     post(a, v, runs, n_packed, cpu, wall, c)
     if a.cg_every > 0:

@@ -179,8 +179,7 @@ def fill(a, variant):
         g = geometry(a.size, variant)
         print(f"orifice-arch {variant} fill: {n} particles packed ({pack_cpu:.0f} CPU-s), settling", flush=True)
         cpu = gc.runner.liggghts(case, "dem/in.fill", "fill")
-        with open(os.path.join(case, "log", "fill.liggghts")) as fh:
-            settled = [ln.strip() for ln in fh if ln.startswith("granair fill:")][-1]
+        settled = gc.dem.fill_report(os.path.join(case, "log", "fill.liggghts"))
         dump = gc.dem.read_dump(os.path.join(case, "dem", "fill.dump"))
         area = math.pi * g["R_s"] ** 2 if variant == "silo" else g["width"] * 2 * g["half_gap"]
         rho_b, top = gc.outlet.bulk_density(dump["z"], dump["mass"], area, g["d"], k_top=200 if variant == "silo" else 20)

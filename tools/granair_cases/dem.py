@@ -17,6 +17,7 @@
     merge_points(mesh)                  a `dump mesh/vtk` mesh with its repeated points merged
     write_mesh_vtk(path, ...)           triangles with per-element fields as legacy VTK (ParaView)
     discharge_balance(log)              the particle accounting granairFoam prints at the end
+    fill_report(log, start)             the last line of a fill's LIGGGHTS log that begins with start
 """
 import glob
 import math
@@ -345,3 +346,17 @@ def discharge_balance(log):
     bal["wall_time_s"] = float(m.group(1)) if m else float("nan")
     bal["closes"] = bal["lost"] == 0 and bal["inserted"] == bal["present"] + bal["removed"]
     return bal
+
+
+def fill_report(log, start="granair fill:"):
+    """The last line of a LIGGGHTS log beginning with `start` (the fill scripts print
+    "granair fill: settled after ..." once the bed is at rest), stripped; a CaseError
+    naming the log if there is none (the fill did not finish)."""
+    try:
+        with open(log) as fh:
+            lines = [ln.strip() for ln in fh if ln.startswith(start)]
+    except OSError as e:
+        raise CaseError(f"{log}: cannot read the fill's log ({e.strerror})")
+    if not lines:
+        raise CaseError(f"{log}: no line beginning '{start}' (did the fill finish?)")
+    return lines[-1]

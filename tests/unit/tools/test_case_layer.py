@@ -277,6 +277,16 @@ class Dem(unittest.TestCase):
             write(os.path.join(d, "bad"), "nothing\n")
             with self.assertRaisesRegex(CaseError, "no DEM discharge balance"):
                 gc.dem.discharge_balance(os.path.join(d, "bad"))
+            # the fill's report: the last matching line, not the script's echoed print command
+            write(os.path.join(d, "log.fill"), 'print "granair fill: settled after $n steps"\n'
+                  "granair fill: settled after 3 x 100 steps, rms 0.01 m/s\n"
+                  "granair fill: settled after 4 x 100 steps, rms 0.004 m/s\n")
+            self.assertEqual(gc.dem.fill_report(os.path.join(d, "log.fill")),
+                             "granair fill: settled after 4 x 100 steps, rms 0.004 m/s")
+            with self.assertRaisesRegex(CaseError, r"bad: no line beginning 'granair fill: settled'"):
+                gc.dem.fill_report(os.path.join(d, "bad"), "granair fill: settled")
+            with self.assertRaisesRegex(CaseError, "missing: cannot read the fill's log"):
+                gc.dem.fill_report(os.path.join(d, "missing"))
 
 
 class ChecksAndRunner(unittest.TestCase):
