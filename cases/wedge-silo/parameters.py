@@ -67,8 +67,8 @@ SIZES = {
 # Settled fills of the DEM demo (reference-demo/summary.txt): b [mm] ->
 # (fill height above the orifice [m], bulk density rho_b [kg/m3]).
 FILLS = {5: (0.086, 617.66), 10: (0.135, 619.41), 15: (0.191, 617.12)}
-# ... of the DEM study (reference-study-b10, -b15 summary.txt; b = 5 mm not run at study size)
-FILLS_STUDY = {10: (0.260, 619.0), 15: (0.253, 612.0)}
+# ... of the DEM study (reference-study-b10, -b15 summary.txt; b = 5 mm: reference-study-whole/summary_b5.txt)
+FILLS_STUDY = {5: (0.149, 623.0), 10: (0.260, 619.0), 15: (0.253, 612.0)}
 # Shear test of the lactose (cases.md, section A): normal, shear stress [kPa].
 SHEAR_TEST = [(0.208, 0.11), (0.384, 0.198), (0.718, 0.359), (1.349, 0.667), (2.553, 1.251), (4.845, 2.368)]
 # mu(I) parameters not measured for lactose (README, assumptions): mu_2 - mu_s and

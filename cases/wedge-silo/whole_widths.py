@@ -5,7 +5,9 @@
 Reads only what reference-study-whole/ commits, one time series per run
 (b<b>_<air|noair>.csv, written by `study.py --stage post`) and its level file
 (b<b>_<run>.level.json: steady W and window), so it needs none of the run folders, which
-are not kept. For every run and every fill-level band of parameters.py WHOLE_BANDS_MM it
+are not kept; and the continuum mu(I) level from the same fills
+(reference-continuum-study-whole/b<b>_<run>/, `Allrun-continuum --fills study
+--until 0.99`), drawn beside the DEM and tabulated against it. For every run and every fill-level band of parameters.py WHOLE_BANDS_MM it
 takes the rows whose fill level is in the band, from WHOLE_BANDS_FROM on (the 0.1 s
 windows are not yet full before), and averages the mass flow (granairFoam's 0.1 s
 window rate) and the 0.1 s trailing means of the outlet dp/dz and of the air pressure
@@ -14,7 +16,7 @@ the same fill level.
 
 Writes reference-study-whole/whole_bands.csv and whole_bands.md (the README's tables)
 and whole_widths.png (mass flow against time, and mass flow, air effect, outlet dp/dz
-against the fill level).
+against the fill level; the continuum dashed, its rate as a 0.1 s trailing mean).
 
     PYTHONPATH=tools python3 cases/wedge-silo/whole_widths.py
 """
@@ -27,6 +29,7 @@ import parameters as P
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RES = os.path.join(HERE, "reference-study-whole")
+CONTINUUM = os.path.join(HERE, "reference-continuum-study-whole")
 COLOURS = {5: "tab:blue", 10: "tab:orange", 15: "tab:green"}
 
 
@@ -43,6 +46,21 @@ def runs():
             for k in ("outlet_dpdz_Pa_m", "above_p_Pa"):
                 s[k + "_mean"] = gc.series.trailing_mean(s["t"], s[k], 0.1)
             out[(b, air)] = (s, gc.levels.read(os.path.join(RES, f"{name}.level.json")))
+    return out
+
+
+def continuum_runs():
+    """{(b, air): (series, level file)} of the continuum mu(I) runs from the study fills."""
+    out = {}
+    for b in (5, 10, 15):
+        for air in (True, False):
+            d = os.path.join(CONTINUUM, f"b{b}_{'air' if air else 'noair'}")
+            if os.path.exists(os.path.join(d, "timeseries.csv")):
+                s = gc.series.read_csv(os.path.join(d, "timeseries.csv"))
+                for k in ("mass_flow_kg_s", "outlet_dpdz_Pa_m"):
+                    if k in s:      # a dry run has no air pressure gradient
+                        s[k + "_mean"] = gc.series.trailing_mean(s["t"], s[k], 0.1)
+                out[(b, air)] = (s, gc.levels.read(os.path.join(d, "level.json")))
     return out
 
 
@@ -73,8 +91,9 @@ def band_rows(by):
     return rows
 
 
-def markdown(by, rows):
+def markdown(by, rows, cont):
     f = lambda r, k, fmt: fmt.format(r[k]) if k in r else "–"   # noqa: E731
+    w = lambda runs, b, air: runs[(b, air)][1]["steady_mass_flow_kg_s"]   # noqa: E731
     lines = ["Steady (level files): W with air / DEM only, air effect", ""]
     lines += gc.tables.markdown(
         ["b [mm]", "W with air [kg/s]", "W DEM only [kg/s]", "air effect", "outlet dp/dz [Pa/m]"],
@@ -84,6 +103,17 @@ def markdown(by, rows):
           if (b, True) in by and (b, False) in by else "–",
           f"{by[(b, True)][1]['outlet_dpdz_Pa_m']:.0f}" if (b, True) in by else "–"]
          for b in sorted({b for b, _ in by})])
+    both = [b for b in (5, 10, 15) if all(k in by and k in cont for k in ((b, True), (b, False)))]
+    if both:
+        lines += ["", "Continuum mu(I) from the same fills (reference-continuum-study-whole/) against the DEM", ""]
+        lines += gc.tables.markdown(
+            ["b [mm]", "W with air [kg/s]", "W dry [kg/s]", "air effect", "outlet dp/dz [Pa/m]",
+             "W / DEM, air / dry", "dp/dz / DEM-CFD's", "air effect, DEM-CFD"],
+            [[b, f"{w(cont, b, True):.4g}", f"{w(cont, b, False):.4g}", f"{w(cont, b, True) / w(cont, b, False) - 1:+.1%}",
+              f"{cont[(b, True)][1]['outlet_dpdz_Pa_m']:.0f}",
+              f"{w(cont, b, True) / w(by, b, True):.2f} / {w(cont, b, False) / w(by, b, False):.2f}",
+              f"{cont[(b, True)][1]['outlet_dpdz_Pa_m'] / by[(b, True)][1]['outlet_dpdz_Pa_m']:.2f}",
+              f"{w(by, b, True) / w(by, b, False) - 1:+.1%}"] for b in both])
     lines += ["", f"Fill-level bands (rows from t = {P.WHOLE_BANDS_FROM} s, 0.1 s means)", ""]
     lines += gc.tables.markdown(
         ["b [mm]", "fill level [mm]", "W with air [kg/s]", "W DEM only [kg/s]", "air effect",
@@ -94,9 +124,23 @@ def markdown(by, rows):
     return lines
 
 
-def plot(by, path):
+def plot(by, cont, path):
     plt = gc.plots.pyplot()
     fig, axes = plt.subplots(2, 2, figsize=(12, 8.5))
+    for (b, air), (s, _) in sorted(cont.items()):
+        c, kw = COLOURS[b], dict(ls="--" if air else "-.", lw=0.9, alpha=0.8)
+        label = f"b = {b} mm, continuum mu(I), {'with air' if air else 'dry'}"
+        axes[0, 0].plot(s["t"], s["mass_flow_kg_s_mean"], color=c, label=label, **kw)
+        late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
+        h = s["fill_level_m"][late] * 1e3
+        axes[0, 1].plot(h, s["mass_flow_kg_s_mean"][late], color=c, label=label, **kw)
+        if air:
+            axes[1, 1].plot(h, s["outlet_dpdz_Pa_m_mean"][late], color=c, label=f"b = {b} mm, continuum", **kw)
+            if (b, False) in cont:
+                s0 = cont[(b, False)][0]
+                w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0["mass_flow_kg_s_mean"][::-1], left=np.nan, right=np.nan)
+                axes[1, 0].plot(h, 100 * (s["mass_flow_kg_s_mean"][late] / w0 - 1), color=c,
+                                label=f"b = {b} mm, continuum", **kw)
     for (b, air), (s, _) in sorted(by.items()):
         c, ls = COLOURS[b], "-" if air else ":"
         label = f"b = {b} mm, {'with air' if air else 'DEM only'}"
@@ -118,11 +162,12 @@ def plot(by, path):
     for ax, (x, y) in zip(axes.flat, titles):
         ax.set(xlabel=x, ylabel=y)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=6, ncol=2 if ax in axes[0] else 1)
     for ax in axes.flat[1:]:
         ax.set_xlabel("fill level: bed height above the orifice [mm] (falls as the silo empties)")
-    axes[0, 0].set_ylim(0, None)
-    axes[0, 1].set_ylim(0, None)
+    axes[0, 0].set_ylim(0, 0.5)     # room for the legends above the curves
+    axes[0, 1].set_ylim(0, 0.5)
+    axes[1, 0].set_ylim(-40, 5)
     fig.suptitle("Wedge silo, study size, whole discharges (reference-study-whole/)", fontsize=10)
     fig.tight_layout()
     gc.plots.save(fig, path)
@@ -132,12 +177,12 @@ def main():
     by = runs()
     if not by:
         raise gc.CaseError(f"{RES}: no b<b>_<air|noair>.csv (run study.py --size study --whole --stage post first)")
-    rows = band_rows(by)
+    rows, cont = band_rows(by), continuum_runs()
     gc.series.write_rows(os.path.join(RES, "whole_bands.csv"), rows, fmt="{:.6g}")
-    lines = markdown(by, rows)
+    lines = markdown(by, rows, cont)
     with open(os.path.join(RES, "whole_bands.md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
-    plot(by, os.path.join(RES, "whole_widths.png"))
+    plot(by, cont, os.path.join(RES, "whole_widths.png"))
     print("\n".join(lines))
     print(f"whole_widths: {RES}/whole_bands.csv, whole_bands.md, whole_widths.png")
 
