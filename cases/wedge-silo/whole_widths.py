@@ -33,35 +33,33 @@ CONTINUUM = os.path.join(HERE, "reference-continuum-study-whole")
 COLOURS = {5: "tab:blue", 10: "tab:orange", 15: "tab:green"}
 
 
-def runs():
-    """{(b, air): (series with the 0.1 s means added, level file)} of the committed runs."""
+def load(csv, level, mean_keys):
+    """{(b, air): (series with the 0.1 s trailing means of mean_keys added, level file)}
+    of the runs whose series csv(name) exists; name b<b>_<air|noair>, level(name) its level file."""
     out = {}
     for b in (5, 10, 15):
         for air in (True, False):
             name = f"b{b}_{'air' if air else 'noair'}"
-            path = os.path.join(RES, f"{name}.csv")
-            if not os.path.exists(path):
+            if not os.path.exists(csv(name)):
                 continue
-            s = gc.series.read_csv(path)
-            for k in ("outlet_dpdz_Pa_m", "above_p_Pa"):
-                s[k + "_mean"] = gc.series.trailing_mean(s["t"], s[k], 0.1)
-            out[(b, air)] = (s, gc.levels.read(os.path.join(RES, f"{name}.level.json")))
+            s = gc.series.read_csv(csv(name))
+            for k in mean_keys:
+                if k in s:      # a dry run has no air pressure columns
+                    s[k + "_mean"] = gc.series.trailing_mean(s["t"], s[k], 0.1)
+            out[(b, air)] = (s, gc.levels.read(level(name)))
     return out
+
+
+def runs():
+    """The committed DEM runs (granairFoam's rate is already a 0.1 s window rate)."""
+    return load(lambda n: os.path.join(RES, f"{n}.csv"), lambda n: os.path.join(RES, f"{n}.level.json"),
+                ("outlet_dpdz_Pa_m", "above_p_Pa"))
 
 
 def continuum_runs():
-    """{(b, air): (series, level file)} of the continuum mu(I) runs from the study fills."""
-    out = {}
-    for b in (5, 10, 15):
-        for air in (True, False):
-            d = os.path.join(CONTINUUM, f"b{b}_{'air' if air else 'noair'}")
-            if os.path.exists(os.path.join(d, "timeseries.csv")):
-                s = gc.series.read_csv(os.path.join(d, "timeseries.csv"))
-                for k in ("mass_flow_kg_s", "outlet_dpdz_Pa_m"):
-                    if k in s:      # a dry run has no air pressure gradient
-                        s[k + "_mean"] = gc.series.trailing_mean(s["t"], s[k], 0.1)
-                out[(b, air)] = (s, gc.levels.read(os.path.join(d, "level.json")))
-    return out
+    """The continuum mu(I) runs from the study fills (a rate per step: its 0.1 s mean is drawn)."""
+    return load(lambda n: os.path.join(CONTINUUM, n, "timeseries.csv"), lambda n: os.path.join(CONTINUUM, n, "level.json"),
+                ("mass_flow_kg_s", "outlet_dpdz_Pa_m"))
 
 
 def band_rows(by):
@@ -97,10 +95,8 @@ def markdown(by, rows, cont):
     lines = ["Steady (level files): W with air / DEM only, air effect", ""]
     lines += gc.tables.markdown(
         ["b [mm]", "W with air [kg/s]", "W DEM only [kg/s]", "air effect", "outlet dp/dz [Pa/m]"],
-        [[b, f"{by[(b, True)][1]['steady_mass_flow_kg_s']:.4g}" if (b, True) in by else "–",
-          f"{by[(b, False)][1]['steady_mass_flow_kg_s']:.4g}" if (b, False) in by else "–",
-          f"{by[(b, True)][1]['steady_mass_flow_kg_s'] / by[(b, False)][1]['steady_mass_flow_kg_s'] - 1:+.1%}"
-          if (b, True) in by and (b, False) in by else "–",
+        [[b, f"{w(by, b, True):.4g}" if (b, True) in by else "–", f"{w(by, b, False):.4g}" if (b, False) in by else "–",
+          f"{w(by, b, True) / w(by, b, False) - 1:+.1%}" if (b, True) in by and (b, False) in by else "–",
           f"{by[(b, True)][1]['outlet_dpdz_Pa_m']:.0f}" if (b, True) in by else "–"]
          for b in sorted({b for b, _ in by})])
     both = [b for b in (5, 10, 15) if all(k in by and k in cont for k in ((b, True), (b, False)))]
@@ -124,37 +120,32 @@ def markdown(by, rows, cont):
     return lines
 
 
+def draw(axes, runs, rate, style, label, tag):
+    """One level's curves: its rate against time and fill level, and with air its outlet
+    dp/dz and its air effect (against its own dry rate at the same fill level, which falls
+    monotonically) against the fill level, once the 0.1 s windows are full and while a
+    bed is left."""
+    for (b, air), (s, _) in sorted(runs.items()):
+        c, kw = COLOURS[b], style(b, air)
+        axes[0, 0].plot(s["t"], s[rate], color=c, label=label(b, air), **kw)
+        late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
+        h = s["fill_level_m"][late] * 1e3
+        axes[0, 1].plot(h, s[rate][late], color=c, label=label(b, air), **kw)
+        if air:
+            axes[1, 1].plot(h, s["outlet_dpdz_Pa_m_mean"][late], color=c, label=f"b = {b} mm{tag}", **kw)
+            if (b, False) in runs:
+                s0 = runs[(b, False)][0]
+                w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0[rate][::-1], left=np.nan, right=np.nan)
+                axes[1, 0].plot(h, 100 * (s[rate][late] / w0 - 1), color=c, label=f"b = {b} mm{tag}", **kw)
+
+
 def plot(by, cont, path):
     plt = gc.plots.pyplot()
     fig, axes = plt.subplots(2, 2, figsize=(12, 8.5))
-    for (b, air), (s, _) in sorted(cont.items()):
-        c, kw = COLOURS[b], dict(ls="--" if air else "-.", lw=0.9, alpha=0.8)
-        label = f"b = {b} mm, continuum mu(I), {'with air' if air else 'dry'}"
-        axes[0, 0].plot(s["t"], s["mass_flow_kg_s_mean"], color=c, label=label, **kw)
-        late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
-        h = s["fill_level_m"][late] * 1e3
-        axes[0, 1].plot(h, s["mass_flow_kg_s_mean"][late], color=c, label=label, **kw)
-        if air:
-            axes[1, 1].plot(h, s["outlet_dpdz_Pa_m_mean"][late], color=c, label=f"b = {b} mm, continuum", **kw)
-            if (b, False) in cont:
-                s0 = cont[(b, False)][0]
-                w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0["mass_flow_kg_s_mean"][::-1], left=np.nan, right=np.nan)
-                axes[1, 0].plot(h, 100 * (s["mass_flow_kg_s_mean"][late] / w0 - 1), color=c,
-                                label=f"b = {b} mm, continuum", **kw)
-    for (b, air), (s, _) in sorted(by.items()):
-        c, ls = COLOURS[b], "-" if air else ":"
-        label = f"b = {b} mm, {'with air' if air else 'DEM only'}"
-        axes[0, 0].plot(s["t"], s["mass_flow_kg_s"], color=c, ls=ls, lw=1.4, label=label)
-        # against the fill level: once the 0.1 s windows are full, and while a bed is left
-        late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
-        h = s["fill_level_m"][late] * 1e3
-        axes[0, 1].plot(h, s["mass_flow_kg_s"][late], color=c, ls=ls, lw=1.4, label=label)
-        if air:
-            axes[1, 1].plot(h, s["outlet_dpdz_Pa_m_mean"][late], color=c, lw=1.4, label=f"b = {b} mm")
-            if (b, False) in by:   # the DEM-only rate at the same fill level (its level falls monotonically)
-                s0 = by[(b, False)][0]
-                w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0["mass_flow_kg_s"][::-1], left=np.nan, right=np.nan)
-                axes[1, 0].plot(h, 100 * (s["mass_flow_kg_s"][late] / w0 - 1), color=c, lw=1.4, label=f"b = {b} mm")
+    draw(axes, cont, "mass_flow_kg_s_mean", lambda b, air: dict(ls="--" if air else "-.", lw=0.9, alpha=0.8),
+         lambda b, air: f"b = {b} mm, continuum mu(I), {'with air' if air else 'dry'}", ", continuum")
+    draw(axes, by, "mass_flow_kg_s", lambda b, air: dict(ls="-" if air else ":", lw=1.4),
+         lambda b, air: f"b = {b} mm, {'with air' if air else 'DEM only'}", "")
     titles = [("time since the shutter opened [s]", "mass flow, full 60 mm depth [kg/s]"),
               ("fill level [mm]", "mass flow, full 60 mm depth [kg/s]"),
               ("fill level [mm]", "air effect: W with air / W DEM only at that level - 1 [%]"),
