@@ -42,6 +42,10 @@ class Template(unittest.TestCase):
             gc.template.check_values(path, dict(A=1, B=[1, 2], C="x"))          # a tuple is saved as a list
             with self.assertRaisesRegex(CaseError, r"other numbers \(A: 1 vs 2, D: None vs 0\); start again"):
                 gc.template.check_values(path, dict(A=2, B=[1, 2], C="x", D=0), "start again")
+            # a key added to the case later: a folder without it had its default (since)
+            gc.template.check_values(path, dict(A=1, B=[1, 2], C="x", D=0), since=dict(D=0))
+            with self.assertRaisesRegex(CaseError, r"D: 0 vs 1"):
+                gc.template.check_values(path, dict(A=1, B=[1, 2], C="x", D=1), since=dict(D=0))
 
     def test_a_folder_set_up_in_another_checkout_resumes_here(self):
         # A pack from another machine names that machine's checkout: the place is
