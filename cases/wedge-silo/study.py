@@ -8,11 +8,16 @@ tables, field pictures and VTK files, the study plots and the checks.
              [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
              [--rolling MU_R [--rolling-model epsd2|cdt]]
              [--fill-height H] [--cg-every T] [--whole [--chunk T]] [--pack DIR] [--stage all|fill|runs|post]
-             [--setup-only] [--check]
+             [--full-depth] [--setup-only] [--check]
 
 Fills and runs are independent serial jobs, --jobs of them at a time (on a
 shared machine this beats one 2-rank job: the thin periodic slice gives every
 rank as many ghost particles as it owns); --np N runs each discharge on N ranks.
+
+--full-depth simulates the silo's whole 60 mm depth between front and back
+walls (DEM walls of the shaft's material, a 3-D air mesh with no-slip walls)
+instead of the periodic slice: about 12x the parcels at demo size; what the
+slice reduction changes (README, "Full depth against the slice").
 
 --whole runs each discharge until the silo is empty or the flow has stopped
 (parameters.py WHOLE_*, --t-end the limit, default 15 s), granairFoam a chunk
@@ -62,7 +67,10 @@ def numbers(a, b_mm, air):
     if not s >= 1.0:
         raise gc.CaseError(f"coarse-graining factor s = {s}, expected >= 1")
     d = s * d_mean
-    slice_ = cfg["slice_parcels"] * d
+    # the DEM and the air in a thin periodic slice of the depth (one cell, empty
+    # sides), or --full-depth: the silo's 60 mm between front and back walls
+    # (issue 22: the slice reduction measured)
+    slice_ = P.DEPTH if a.full_depth else cfg["slice_parcels"] * d
     youngs = a.youngs if a.youngs is not None else cfg["youngs"]
     k_coh = {"matched": P.K_COH_REAL * (youngs / P.E_REAL) ** (2.0 / 3.0), "raw": P.K_COH_REAL, "off": 0.0}[a.cohesion]
     t_r = gc.dem.rayleigh_time(s * P.D_MIN_PSD / 2, youngs, P.NU, P.RHO_P)
@@ -91,7 +99,7 @@ def numbers(a, b_mm, air):
                 ABOVE_X=b / 2 + z_above * math.tan(theta) + 1e-6, ABOVE_Z_LO=z_above - 1e-4,
                 ABOVE_Z_HI=z_above + 1e-4, SKIN=0.3 * d, YOUNGS=youngs, MU_W=P.WALL_FRICTION,
                 COHESION=a.cohesion, K_COH=k_coh, ROLLING_MU=a.rolling,
-                ROLLING=f" rolling_friction {a.rolling_model}" if a.rolling else "",
+                ROLLING=f" rolling_friction {a.rolling_model}" if a.rolling else "",   # also in depth()
                 ROLLING_FIX=f"fix m6 all property/global coefficientRollingFriction peratomtypepair 2 {mu_r} {mu_r} {mu_r} {mu_r}"
                 if a.rolling else "# (none: --rolling 0)", R_TYPE=s * P.D_MEAN_PSD / 2, CHUNK=chunk,
                 SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
@@ -99,7 +107,23 @@ def numbers(a, b_mm, air):
                 N_MIN=math.ceil(P.SETTLE_MIN / (chunk * dem_dt)), N_MAX=math.ceil(P.SETTLE_MAX / (chunk * dem_dt)),
                 FILL="../fill", SEED=a.seed, CG_EVERY=round(cg_every / dem_dt),
                 GRANAIR_ROOT=os.path.normpath(os.path.join(HERE, "..", "..")),
-                N_PARCELS=round(P.PACKING_SETTLED * P.fill_area(b, fill) * slice_ / (s ** 3 * (math.pi / 6 * d3))))
+                N_PARCELS=round(P.PACKING_SETTLED * P.fill_area(b, fill) * slice_ / (s ** 3 * (math.pi / 6 * d3))),
+                **depth(a.full_depth, slice_, h, f" rolling_friction {a.rolling_model}" if a.rolling else ""))
+
+
+def depth(full, slice_, h, rolling):
+    """The placeholders that differ between the periodic slice and the full depth: the
+    air mesh's cells across the depth (the side columns' size 2h) and its front/back
+    patch, the DEM's y boundary and its front/back walls (the shaft planes' material)."""
+    if not full:
+        return dict(NY=1, FRONT_BACK="empty", FRONT_BACK_U="empty", FRONT_BACK_P="empty", Y_BOUNDARY="p",
+                    DEPTH_WALLS="# (no front and back walls: a periodic slice of the depth)",
+                    DEPTH_NOTE=f"a 2-D slice {slice_ * 1e3:.4g} mm thick (one cell, empty)", FULL_DEPTH=0)
+    walls = "\n".join(f"fix {n} all wall/gran model hertz tangential history cohesion sjkr{rolling} primitive type 2 "
+                       f"yplane {y:.12g}" for n, y in (("front", 0.0), ("back", slice_)))
+    return dict(NY=max(2, round(slice_ / (2 * h))), FRONT_BACK="wall", FRONT_BACK_U="noSlip",
+                FRONT_BACK_P="zeroGradient", Y_BOUNDARY="f", DEPTH_WALLS="# the silo's front and back walls\n" + walls,
+                DEPTH_NOTE=f"the full depth {slice_ * 1e3:.4g} mm between front and back walls", FULL_DEPTH=1)
 
 
 def hopper_walls(v, d):
@@ -129,16 +153,20 @@ def write_fill(v, d):
     while P.fill_area(2 * b2, top) * sl * P.PACKING_INSERT < vol:
         top += 0.001
 
+    full = v["FULL_DEPTH"]
+
     def sample(rng, r, top):
         z = rng.uniform(r, top)
-        return rng.uniform(-w2 + r, w2 - r), rng.uniform(0.0, sl), z
+        return rng.uniform(-w2 + r, w2 - r), rng.uniform(r, sl - r) if full else rng.uniform(0.0, sl), z
 
     def inside(x, y, z, r):
         c = math.cos(v["THETA"])
+        if full and not r + gap <= y <= sl - r - gap:      # the front and back walls
+            return False
         return not (z < r + gap or abs(x) > w2 - r - gap or (z < hh + r and (
             (x + b2 + z * t) * c < r + gap or (b2 + z * t - x) * c < r + gap)))
     atoms = gc.dem.loose_packing(diam, rng, sample, inside, lambda tp: tp * 1.05, top,
-                                 v["S"] * P.D_MAX_PSD * 1.0001, gap, origin=(-w2, 0.0, 0.0), periodic_y=sl)
+                                 v["S"] * P.D_MAX_PSD * 1.0001, gap, origin=(-w2, 0.0, 0.0), periodic_y=None if full else sl)
     box = (-P.WIDTH / 2 - 0.001, P.WIDTH / 2 + 0.001, 0.0, sl, -P.SINK_DEPTH - 0.005,
            max(hh + P.SHAFT_HEIGHT, 1.9 * v["FILL_HEIGHT"] + 0.02))
     if max(z + dd / 2 for _, _, z, dd in atoms) > box[5]:
@@ -210,7 +238,9 @@ def do_run(a, b, air, work):
         packed(a, d, name)
     resume = a.whole and not a.setup_only and gc.chunks.record(d)["chunks"]
     if resume:
-        gc.template.check_values(os.path.join(d, "case.json"), v)
+        # folders from before --full-depth hold a periodic slice
+        gc.template.check_values(os.path.join(d, "case.json"), v,
+                                 since=depth(False, v["SLICE"], v["KERNEL_WIDTH"], v["ROLLING"]))
         gc.template.relocate(os.path.join(HERE, "template"), d, v)   # a pack from another checkout
         gc.template.save_values(os.path.join(d, "case.json"), v)
     else:
@@ -306,7 +336,11 @@ def post_run(d, res, name):
         # the air volume balance of the silo above the orifice up to the last field time
         out["balance_time_s"] = out["field_times"][-1]
         out.update(gc.powder.air_balance(d, s, out["balance_time_s"], P.AIR_RHO, P.RHO_P, v["DEPTH_SCALE"]))
-    out["cg"], out["cg_png"] = cg.run(d, v, res, name, out["field_times"])
+    # the pictures and the CG fields' orifice window are drawn from a plane mesh: the
+    # full depth's 3-D fields are in its VTK files (ParaView) and its time series
+    full = bool(v.get("FULL_DEPTH"))
+    out["full_depth"] = full
+    out["cg"], out["cg_png"] = ([], None) if full else cg.run(d, v, res, name, out["field_times"])
     for c in out["cg"]:     # the discharge counter's rate (0.1 s window) next to the CG flux through the orifice
         c["orifice"]["series_mass_flow_kg_s"] = float(np.interp(c["t"], t, s["mass_flow_kg_s"]))
     levels = {x: float(np.interp(x, t, level)) for x in out["field_times"]}      # the fill level at each field time
@@ -316,9 +350,9 @@ def post_run(d, res, name):
         [("p", "air pressure - ambient [Pa]", "RdBu_r", None)] if air else [])
     lims = (-P.WIDTH / 2 * 1e3, P.WIDTH / 2 * 1e3), (-P.BOX_BELOW * 1e3, min(v["HT"], v["FILL_HEIGHT"] + 0.03) * 1e3)
     notes = {x: f"fill level {1e3 * h:.0f} mm" for x, h in levels.items()}
-    out["png"] = gc.plots.case_fields(os.path.join(res, f"{name}_fields.png"), f"{name}: {kind}", d,
-                                      out["field_times"], rows, *lims, notes=notes)
-    three = fill_level_times(levels)
+    out["png"] = None if full else gc.plots.case_fields(os.path.join(res, f"{name}_fields.png"), f"{name}: {kind}", d,
+                                                        out["field_times"], rows, *lims, notes=notes)
+    three = [] if full else fill_level_times(levels)
     if three:       # the same fields at the field times nearest 3/4, 1/2 and 1/4 of the initial fill level
         gc.plots.case_fields(os.path.join(res, f"{name}_fill_levels.png"), f"{name}: {kind}, at three fill levels",
                              d, three, rows, *lims, notes=notes)
@@ -383,7 +417,8 @@ def check(runs, res):
         n, bal = x["name"], x["balance"]
         c.exact(f"{n}: inserted = present + removed", bal["inserted"], bal["present"] + bal["removed"], "integer counts")
         c.exact(f"{n}: lost", bal["lost"], 0, "DischargeCounter: every parcel is in the silo, below it or removed")
-        c.true(f"{n}: fields, picture and VTK at t = 0 and the end", x["field_times"][:1] == [0] and x["png"] and
+        c.true(f"{n}: fields, picture (a slice) and VTK at t = 0 and the end", x["field_times"][:1] == [0] and
+               (x["png"] or x["full_depth"]) and
                os.path.isdir(os.path.join(res, "vtk", n, "openfoam")), f"field times {x['field_times']}")
         cg.checks(c, n, x["cg"])
         if x["air"]:
@@ -565,6 +600,9 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--cg-every", type=float, default=None,
                     help="interval of the CG-field dumps [s] (default: the field interval; 0: none)")
+    ap.add_argument("--full-depth", action="store_true",
+                    help="the silo's full 60 mm depth between front and back walls, not a periodic slice "
+                         "(the air mesh 3-D; about 12x the parcels of the demo slice)")
     ap.add_argument("--whole", action="store_true",
                     help="until the silo is empty or the flow stops, in resumable chunks (--t-end: the limit)")
     ap.add_argument("--chunk", type=float, default=P.WHOLE_CHUNK,
