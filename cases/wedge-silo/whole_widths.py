@@ -30,6 +30,7 @@ import parameters as P
 HERE = os.path.dirname(os.path.abspath(__file__))
 RES = os.path.join(HERE, "reference-study-whole")
 CONTINUUM = os.path.join(HERE, "reference-continuum-study-whole")
+TWO_FLUID = os.path.join(HERE, "reference-two-fluid-study-whole")
 COLOURS = {5: "tab:blue", 10: "tab:orange", 15: "tab:green"}
 
 
@@ -56,14 +57,16 @@ def runs():
                 ("outlet_dpdz_Pa_m", "above_p_Pa"))
 
 
-def continuum_runs():
-    """The continuum mu(I) runs from the study fills (a rate per step: its 0.1 s mean is drawn)."""
-    return load(lambda n: os.path.join(CONTINUUM, n, "timeseries.csv"), lambda n: os.path.join(CONTINUUM, n, "level.json"),
+def continuum_runs(folder=CONTINUUM):
+    """The continuum runs (mu(I) or two-fluid) from the study fills in folder: a rate per
+    step or per 1 ms, so its 0.1 s trailing mean is drawn and averaged, as the DEM's."""
+    return load(lambda n: os.path.join(folder, n, "timeseries.csv"), lambda n: os.path.join(folder, n, "level.json"),
                 ("mass_flow_kg_s", "outlet_dpdz_Pa_m"))
 
 
-def band_rows(by):
-    """One row per width and band that both runs of the width reach (or the one run)."""
+def band_rows(by, rate="mass_flow_kg_s"):
+    """One row per width and band that both runs of the width reach (or the one run);
+    rate: the series' 0.1 s rate column."""
     rows = []
     for b in sorted({b for b, _ in by}):
         for lo, hi in P.WHOLE_BANDS_MM:
@@ -77,11 +80,12 @@ def band_rows(by):
                 if not sel.any():
                     continue
                 tag = "air" if air else "noair"
-                row[f"W_{tag}_kg_s"] = float(np.mean(s["mass_flow_kg_s"][sel]))
+                row[f"W_{tag}_kg_s"] = float(np.mean(s[rate][sel]))
                 row[f"duration_{tag}_s"] = float(np.sum(gc.series.step_lengths(s["t"])[sel]))
                 if air:
                     row["outlet_dpdz_Pa_m"] = float(np.mean(s["outlet_dpdz_Pa_m_mean"][sel]))
-                    row["above_p_Pa"] = float(np.mean(s["above_p_Pa_mean"][sel]))
+                    if "above_p_Pa_mean" in s:      # the DEM-CFD runs' probe about b above
+                        row["above_p_Pa"] = float(np.mean(s["above_p_Pa_mean"][sel]))
             if "W_air_kg_s" in row and "W_noair_kg_s" in row:
                 row["air_effect"] = row["W_air_kg_s"] / row["W_noair_kg_s"] - 1.0
             if len(row) > 3:
@@ -89,7 +93,7 @@ def band_rows(by):
     return rows
 
 
-def markdown(by, rows, cont):
+def markdown(by, rows, levels):
     f = lambda r, k, fmt: fmt.format(r[k]) if k in r else "–"   # noqa: E731
     w = lambda runs, b, air: runs[(b, air)][1]["steady_mass_flow_kg_s"]   # noqa: E731
     lines = ["Steady (level files): W with air / DEM only, air effect", ""]
@@ -99,9 +103,11 @@ def markdown(by, rows, cont):
           f"{w(by, b, True) / w(by, b, False) - 1:+.1%}" if (b, True) in by and (b, False) in by else "–",
           f"{by[(b, True)][1]['outlet_dpdz_Pa_m']:.0f}" if (b, True) in by else "–"]
          for b in sorted({b for b, _ in by})])
-    both = [b for b in (5, 10, 15) if all(k in by and k in cont for k in ((b, True), (b, False)))]
-    if both:
-        lines += ["", "Continuum mu(I) from the same fills (reference-continuum-study-whole/) against the DEM", ""]
+    for title, cont in levels:
+        both = [b for b in (5, 10, 15) if all(k in by and k in cont for k in ((b, True), (b, False)))]
+        if not both:
+            continue
+        lines += ["", f"{title.replace(' (', ' from the same fills (')} against the DEM", ""]
         lines += gc.tables.markdown(
             ["b [mm]", "W with air [kg/s]", "W dry [kg/s]", "air effect", "outlet dp/dz [Pa/m]",
              "W / DEM, air / dry", "dp/dz / DEM-CFD's", "air effect, DEM-CFD"],
@@ -118,6 +124,67 @@ def markdown(by, rows, cont):
           f(r, "W_noair_kg_s", "{:.4f}"), f(r, "air_effect", "{:+.0%}"), f(r, "outlet_dpdz_Pa_m", "{:.0f}"),
           f(r, "above_p_Pa", "{:.1f}")] for r in rows])
     return lines
+
+
+def level_bands(rows, levels):
+    """The continuum levels' fill-level bands beside DEM-CFD's (rows: band_rows of the DEM):
+    one row per level, width and band that both have; and its markdown lines."""
+    dem = {(r["b_mm"], r["fill_from_mm"]): r for r in rows}
+    out = []
+    for title, cont in levels:
+        for r in band_rows(cont, "mass_flow_kg_s_mean"):
+            d = dem.get((r["b_mm"], r["fill_from_mm"]))
+            if d is None or "air_effect" not in r or "air_effect" not in d:
+                continue
+            out.append(dict(level=title.split(" (")[0], **r, dem_air_effect=d["air_effect"], dem_outlet_dpdz_Pa_m=d["outlet_dpdz_Pa_m"]))
+    lines = ["", "Continuum levels by fill-level band against DEM-CFD's (the same bands and means; "
+             "air effect: each level's own W with air / dry - 1 at the same fill level)", ""]
+    lines += gc.tables.markdown(
+        ["level", "b [mm]", "fill level [mm]", "W with air [kg/s]", "W dry [kg/s]", "air effect",
+         "air effect DEM-CFD", "difference [points]", "outlet dp/dz [Pa/m]", "dp/dz / DEM-CFD's"],
+        [[r["level"], r["b_mm"], f"{r['fill_from_mm']}–{r['fill_to_mm']}", f"{r['W_air_kg_s']:.4f}",
+          f"{r['W_noair_kg_s']:.4f}", f"{r['air_effect']:+.1%}", f"{r['dem_air_effect']:+.1%}",
+          f"{100 * (r['air_effect'] - r['dem_air_effect']):+.1f}", f"{r['outlet_dpdz_Pa_m']:.0f}",
+          f"{r['outlet_dpdz_Pa_m'] / r['dem_outlet_dpdz_Pa_m']:.2f}"] for r in out])
+    return out, lines
+
+
+def plot_levels(by, levels, path):
+    """One column per width: W, the air effect and the outlet dp/dz against the fill level,
+    DEM-CFD and every continuum level (the DEM solid, the others dashed and dotted)."""
+    plt = gc.plots.pyplot()
+    widths = sorted({b for b, _ in by})
+    fig, axes = plt.subplots(3, len(widths), figsize=(5 * len(widths), 10), squeeze=False)
+    styles = [("DEM-CFD", "-", 1.4)] + [(t.split(" (")[0], ls, 1.0) for (t, _), ls in zip(levels, ("--", ":", "-."))]
+    for (title, ls, lw), runs in zip(styles, [by] + [c for _, c in levels]):
+        rate = "mass_flow_kg_s" if runs is by else "mass_flow_kg_s_mean"
+        for j, b in enumerate(widths):
+            for air, colour in ((True, "tab:red"), (False, "tab:blue")):
+                if (b, air) not in runs:
+                    continue
+                s = runs[(b, air)][0]
+                late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
+                h = s["fill_level_m"][late] * 1e3
+                kw = dict(ls=ls, lw=lw, color=colour)
+                axes[0, j].plot(h, s[rate][late], label=f"{title}, {'with air' if air else 'dry'}", **kw)
+                if air:
+                    axes[2, j].plot(h, s["outlet_dpdz_Pa_m_mean"][late], label=title, **dict(kw, color="k"))
+                    if (b, False) in runs:
+                        s0 = runs[(b, False)][0]
+                        w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0[rate][::-1], left=np.nan, right=np.nan)
+                        axes[1, j].plot(h, 100 * (s[rate][late] / w0 - 1), label=title, **dict(kw, color="k"))
+    for j, b in enumerate(widths):
+        for i, y in enumerate(["mass flow, full 60 mm depth [kg/s]", "air effect at the same fill level [%]",
+                               "outlet air dp/dz [Pa/m] (0.1 s mean)"]):
+            ax = axes[i, j]
+            ax.set(xlabel="fill level [mm] (falls as the silo empties)", ylabel=y)
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=6)
+        axes[0, j].set_title(f"b = {b} mm")
+        axes[1, j].set_ylim(-40, 5)
+    fig.suptitle("Wedge silo, study fills, whole discharges: DEM-CFD and the continuum levels", fontsize=10)
+    fig.tight_layout()
+    gc.plots.save(fig, path)
 
 
 def draw(axes, runs, rate, style, label, tag):
@@ -168,9 +235,16 @@ def main():
     by = runs()
     if not by:
         raise gc.CaseError(f"{RES}: no b<b>_<air|noair>.csv (run study.py --size study --whole --stage post first)")
-    rows, cont = band_rows(by), continuum_runs()
+    rows, cont, tf = band_rows(by), continuum_runs(), continuum_runs(TWO_FLUID)
+    levels = [("Continuum mu(I) (reference-continuum-study-whole/)", cont),
+              ("Two-fluid (reference-two-fluid-study-whole/)", tf)]
     gc.series.write_rows(os.path.join(RES, "whole_bands.csv"), rows, fmt="{:.6g}")
-    lines = markdown(by, rows, cont)
+    lines = markdown(by, rows, levels)
+    lb, more = level_bands(rows, levels)
+    if lb:
+        gc.series.write_rows(os.path.join(RES, "whole_bands_levels.csv"), lb, fmt="{:.6g}")
+        lines += more
+    plot_levels(by, levels, os.path.join(RES, "whole_levels.png"))
     with open(os.path.join(RES, "whole_bands.md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
     plot(by, cont, os.path.join(RES, "whole_widths.png"))
