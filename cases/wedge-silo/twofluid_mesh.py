@@ -2,7 +2,7 @@
 """Mesh study of the wedge silo's two-fluid level at b = 10 mm (docs/two-fluid-model.md
 "On a silo"), from finished twofluid.py runs that differ only in --mesh.
 
-    twofluid_mesh.py --runs DIR [DIR ...] [--out DIR] [--level]
+    twofluid_mesh.py --runs DIR [DIR ...] [--out DIR] [--level] [--late T0 T1]
 
 Each DIR is a twofluid.py --out folder with the runs b10_air and b10_noair
 (summary.txt, level.json, cost.txt, timeseries.csv of each). Writes
@@ -12,7 +12,8 @@ t1, t1 when half the fill has left), the air effect W_air/W_dry - 1, the
 outlet dp/dz and the slot row's solid fraction of the air run, the CPU
 seconds; how steady each window is (the spread of its 50 ms means and the
 drift of a straight-line fit over it, relative to W); the same over a
-common late window (LATE) every run covers; Roache's grid
+common late window (--late, default LATE) where every run covers it (else
+the report says which runs end before it); Roache's grid
 convergence index (gc.gci, safety factor 1.25, h = 1/N) of each quantity
 over the three finest meshes where it is monotonic. --level: the W study
 goes into the finest mesh's b10_air / b10_noair level.json as "mesh_study"
@@ -34,7 +35,7 @@ BLOCK = 0.05        # [s] the steadiness check's block means
 LATE = (0.6, 0.85)
 
 
-def one(d, air):
+def one(d, air, late_window=LATE):
     name = f"b{B}_{'air' if air else 'noair'}"
     s = gc.series.read_keys(os.path.join(d, name, "summary.txt"))
     c = gc.series.read_keys(os.path.join(d, name, "cost.txt"))
@@ -46,8 +47,9 @@ def one(d, air):
     _, (blocks,) = gc.series.window_means(t[sel], gc.series.step_lengths(t[sel], t0), [w[sel]], BLOCK, keep_last=0.5)
     W = float(s["W_kg_s"])
     drift = gc.series.slope(t, w, t0, t1) * (t1 - t0) / W
-    late = [gc.series.time_mean(t, ts[k], LATE[0], LATE[1], dt=gc.series.step_lengths(t))
-            for k in ("mass_flow_kg_s", "outlet_dpdz_Pa_m")] if t[-1] >= LATE[1] else [float("nan")] * 2
+    lo, hi = late_window
+    late = [gc.series.time_mean(t, ts[k], lo, hi, dt=gc.series.step_lengths(t))
+            for k in ("mass_flow_kg_s", "outlet_dpdz_Pa_m")] if t[-1] >= hi else [float("nan")] * 2
     return dict(W=W, W_late=late[0], dpdz_late=late[1], dpdz=float(s["outlet_dpdz_Pa_m"]), alpha=float(s["slot_row_alpha"]), t0=t0, t1=t1,
                 t_end=float(s["t_end_s"]), cpu_s=float(c["cpu_s"]), cells=int(float(c["cells"])),
                 spread=(float(blocks.max() - blocks.min()) / W) if blocks.size else float("nan"), drift=drift,
@@ -58,10 +60,14 @@ def main():
     ap = gc.cli.parser(__doc__)
     ap.add_argument("--runs", nargs="+", required=True)
     ap.add_argument("--level", action="store_true", help="write the W study into the finest mesh's level.json files")
+    ap.add_argument("--late", type=float, nargs=2, default=list(LATE), metavar=("T0", "T1"),
+                    help="the common late window [s] (default %(default)s)")
     a = gc.cli.parse(ap, os.path.join(HERE, "reference-two-fluid-mesh"))
+    if not 0 <= a.late[0] < a.late[1]:
+        ap.error(f"--late {a.late[0]:g} {a.late[1]:g}: expected 0 <= T0 < T1 [s]")
     rows, series = [], {}
     for d in a.runs:
-        wet, dry = one(d, True), one(d, False)
+        wet, dry = one(d, True, a.late), one(d, False, a.late)
         if wet["N"] != dry["N"]:
             raise gc.CaseError(f"{d}: the air run is on mesh b/{wet['N']}, the dry run on b/{dry['N']}")
         series[wet["N"]] = (wet, dry)
@@ -77,8 +83,11 @@ def main():
     rows.sort(key=lambda r: r["N"])
     if len({r["N"] for r in rows}) != len(rows):
         raise gc.CaseError("--runs: two folders on the same mesh (" + ", ".join(str(r["N"]) for r in rows) + ")")
-    keys = ("W_dry_kg_s", "W_air_kg_s", "air_effect", "outlet_dpdz_Pa_m", "slot_row_alpha_air",
-            "W_dry_late_kg_s", "W_air_late_kg_s", "air_effect_late", "outlet_dpdz_late_Pa_m")
+    # runs that end before the late window's end have no late means (nan): no table, no GCI of them
+    short = sorted({f"b/{n} {what} (t_end {r['t_end']:g} s)" for n, pair in series.items()
+                    for r, what in zip(pair, ("air", "dry")) if np.isnan(r["W_late"])})
+    keys = ("W_dry_kg_s", "W_air_kg_s", "air_effect", "outlet_dpdz_Pa_m", "slot_row_alpha_air") + (
+        () if short else ("W_dry_late_kg_s", "W_air_late_kg_s", "air_effect_late", "outlet_dpdz_late_Pa_m"))
     three = rows[-3:][::-1]
     study = {}
     for k in keys:
@@ -100,10 +109,16 @@ def main():
                   r["outlet_dpdz_Pa_m"], r["slot_row_alpha_air"], r["slot_row_alpha_dry"], r["window_air_s"],
                   r["window_dry_s"], 100 * r["spread_air"], 100 * r["spread_dry"], 100 * r["drift_air"],
                   100 * r["drift_dry"], r["cpu_air_s"], r["cpu_dry_s"]) for r in rows]
-    lines += ["", f"Over the common window {LATE[0]:g}-{LATE[1]:g} s (every run, the dry ones past half the fill out):", "",
-              "| N | W dry [kg/s] | W air [kg/s] | air effect | outlet dp/dz [Pa/m] |", "|---|---|---|---|---|"]
-    lines += ["| %d | %.4f | %.4f | %+.1f %% | %.0f |" % (r["N"], r["W_dry_late_kg_s"], r["W_air_late_kg_s"],
-                                                       100 * r["air_effect_late"], r["outlet_dpdz_late_Pa_m"]) for r in rows]
+    lo, hi = a.late
+    if short:
+        lines += ["", f"No common window {lo:g}-{hi:g} s: these runs end before it: {', '.join(short)} "
+                      f"(--late T0 T1 picks one they cover)."]
+    else:
+        lines += ["", f"Over the common window {lo:g}-{hi:g} s (every run, the dry ones past half the fill out):", "",
+                  "| N | W dry [kg/s] | W air [kg/s] | air effect | outlet dp/dz [Pa/m] |", "|---|---|---|---|---|"]
+        lines += ["| %d | %.4f | %.4f | %+.1f %% | %.0f |" % (r["N"], r["W_dry_late_kg_s"], r["W_air_late_kg_s"],
+                                                           100 * r["air_effect_late"], r["outlet_dpdz_late_Pa_m"])
+                  for r in rows]
     lines += ["", f"GCI (Roache, safety 1.25, h = 1/N) over N = {'/'.join(str(r['N']) for r in three[::-1])}:", ""]
     for k, g in study.items():
         lines.append(f"- {k}: " + ("GCI_fine %.1f %%, order %.2f, extrapolated %.5g" % (
