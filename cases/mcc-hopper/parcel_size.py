@@ -131,10 +131,7 @@ def main():
               f"{fit_all['k_se']:.3f}, chi2 {fit_all['chi2']:.2f} on {fit_all['dof']} dof (Birge {fit_all['birge']:.2f}); "
               f"W at 660 um {fit_all['w_at']:.4f} +- {fit_all['w_at_se']:.4f} kg/s")
     for c in cont:
-        same = f", {c['over_dem_same_d']:.3f} x the DEM at that d" if c["over_dem_same_d"] else ""
-        print(f"  continuum, calibrated mu(I), d in I = {c['d'] * 1e6:.0f} um ({c['folder']}): W {c['W']:.4f} kg/s = "
-              f"{c['over_dem_converged']:.3f} x the size-converged DEM ({c['over_dem_converged_band'][0]:.3f}-"
-              f"{c['over_dem_converged_band'][1]:.3f}){same}; within 15 %: {'yes' if c['within_target'] else 'no'}")
+        print("  " + gc.size_study.against_line(c, target=TARGET))
 
 
 def plot(runs, fit, pairs, cont, seeds, path):

@@ -180,11 +180,7 @@ def main():
           f"+- {circ['w_at_se']:.4f}; Hagen-Beverloo at {d0 * 1e6:.0f} um (C = {P.BEVERLOO_C}, k = 1..3): "
           f"{bev[0]:.4f}..{bev[1]:.4f} kg/s")
     for c in cont:
-        same = f", {c['over_dem_same_d']:.3f} x the DEM at that d" if c["over_dem_same_d"] else ""
-        print(f"  continuum, calibrated mu(I){', dilatancy' if c['dilatancy'] else ''}, d in I = {c['d'] * 1e6:.0f} um "
-              f"({c['folder']}): W {c['W']:.4f} kg/s = {c['over_dem_converged']:.3f} x the size-converged DEM "
-              f"({c['over_dem_converged_band'][0]:.3f}-{c['over_dem_converged_band'][1]:.3f}){same}; "
-              f"within 15 %: {'yes' if c['within_target'] else 'no'}")
+        print("  " + gc.size_study.against_line(c, "calibrated mu(I)" + (", dilatancy" if c["dilatancy"] else ""), TARGET))
 
 
 def plot(runs, size, cont, bev, d0, seeds, path):

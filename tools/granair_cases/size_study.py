@@ -105,3 +105,13 @@ def against(levels, runs, w, w_se, target):
         c["over_dem_same_d"] = c["W"] / same["W"] if same else None
         c["within_target"] = abs(c["over_dem_converged"] - 1) <= target
     return levels
+
+
+def against_line(c, model="calibrated mu(I)", target=0.15):
+    """One printed line of a level's run after against(): its W as a multiple of the
+    size-converged DEM's (and of the DEM run at the same d, if any)."""
+    same = f", {c['over_dem_same_d']:.3f} x the DEM at that d" if c["over_dem_same_d"] else ""
+    lo, hi = c["over_dem_converged_band"]
+    return (f"continuum, {model}, d in I = {c['d'] * 1e6:.0f} um ({c['folder']}): W {c['W']:.4f} kg/s = "
+            f"{c['over_dem_converged']:.3f} x the size-converged DEM ({lo:.3f}-{hi:.3f}){same}; "
+            f"within {100 * target:g} %: {'yes' if c['within_target'] else 'no'}")
