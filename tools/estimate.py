@@ -136,6 +136,11 @@ def main(argv=None):
     print(f"  {run['particles']:.4g} particles, {run['cells']:.4g} cells, air {'on' if run['air'] else 'off'}; "
           f"{run['time']:g} s simulated: {run['cfd_steps']} coupling steps of {run['cfd_dt']:g} s, "
           f"{run['interval']} DEM steps of {dem_dt:.4g} s each")
+    if a.calibration and not run["air"] and "dem_off_s_per_particle_step" not in costs.get("cases", {}).get(
+            a.calibration, {"dem_off_s_per_particle_step": 0}):
+        # a case calibrated on its air run only: its DEM-only cost is the benchmark's, said so
+        print(f"  note: calibration {a.calibration} was measured with air on; the DEM-only cost per particle-step "
+              "is the benchmark's")
     if run.get("particles_from"):
         print(f"  particle count from {run['particles_from']}")
     print(f"  {'ranks':>6} {'wall':>12} {'core-hours':>11} {'memory/rank':>12}  DEM / CFD / coupling share")
