@@ -132,6 +132,13 @@ check("against: same d", lv[0]["over_dem_same_d"], 0.12 / runs[0]["W"])
 if lv[0]["within_target"] or not lv[1]["within_target"] or lv[1]["over_dem_same_d"] is not None:
     failures.append(f"against: within_target {lv[0]['within_target']}, {lv[1]['within_target']}, "
                     f"same d {lv[1]['over_dem_same_d']}")
+# size_study.against_line: the printed line of the second level (no DEM run at its d; 1.05, within 15 %)
+lv[1]["folder"] = "x"
+line = size_study.against_line(lv[1], "calibrated mu(I)", 0.15)
+want = ("continuum, calibrated mu(I), d in I = 1000 um (x): W 0.1050 kg/s = 1.050 x the size-converged DEM "
+        "(0.955-1.167); within 15 %: yes")
+if line != want:
+    failures.append(f"against_line: {line!r}, expected {want!r}")
 
 # size_study.seed_repeats: a repeat of the s = 5 run 0.003 kg/s higher, the two s.e. 0.00225 and 0.0015,
 # is z = 0.003 / sqrt(0.00225^2 + 0.0015^2) = 1.1094; a repeat of an s with no seed-1 run is left out
