@@ -326,7 +326,7 @@ def post_run(d, res, name):
     t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
     out = dict(name=name, b_mm=v["B_MM"], air=air, s=v["S"], size=v["SIZE"], np=v["NP"], t_end=float(t[-1]),
                steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1),
-               balance=r["balance"], whole=bool(chunks), rolling=f", rolling friction {v['ROLLING'].split()[-1]} mu_r = "
+               balance=r["balance"], whole=bool(chunks), full_depth=bool(v.get("FULL_DEPTH")), rolling=f", rolling friction {v['ROLLING'].split()[-1]} mu_r = "
                f"{v['ROLLING_MU']:g}" if v.get("ROLLING") else "", field_times=[x for x in field_times(v) if gc.foam.time_dir(d, x)])
     if air:
         for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m"):
@@ -401,7 +401,8 @@ def post_study(a, work, res, timings, wall):
         gc.levels.write(os.path.join(res, f"{x['name']}.level.json"), case="wedge-silo",
                         level="cg-dem-cfd" if x["air"] else "cg-dem",
                         model=f"DEM{'-CFD' if x['air'] else ''}, s = {x['s']:.3g}, {x['size']} size"
-                        + (", whole discharge" if x["whole"] else "") + x["rolling"], b_mm=x["b_mm"],
+                        + (", whole discharge" if x["whole"] else "")
+                        + (", full 60 mm depth between walls" if x["full_depth"] else "") + x["rolling"], b_mm=x["b_mm"],
                         air=x["air"], steady_mass_flow_kg_s=x["W_kg_s"], steady_window_s=[x["steady_from_s"], x["steady_to_s"]],
                         outlet_dpdz_Pa_m=x.get("outlet_dpdz_Pa_m"), wall_time_s=x["balance"]["wall_time_s"], cores=x["np"],
                         timeseries=f"{x['name']}.csv", parcels=fills[x["b_mm"]]["n_parcels"], coarse_graining_factor=x["s"])
