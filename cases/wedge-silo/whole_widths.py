@@ -162,17 +162,13 @@ def plot_levels(by, levels, path):
             for air, colour in ((True, "tab:red"), (False, "tab:blue")):
                 if (b, air) not in runs:
                     continue
-                s = runs[(b, air)][0]
-                late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
-                h = s["fill_level_m"][late] * 1e3
+                h, w, dpdz, effect = level_curves(runs, b, air, rate)
                 kw = dict(ls=ls, lw=lw, color=colour)
-                axes[0, j].plot(h, s[rate][late], label=f"{title}, {'with air' if air else 'dry'}", **kw)
+                axes[0, j].plot(h, w, label=f"{title}, {'with air' if air else 'dry'}", **kw)
                 if air:
-                    axes[2, j].plot(h, s["outlet_dpdz_Pa_m_mean"][late], label=title, **dict(kw, color="k"))
-                    if (b, False) in runs:
-                        s0 = runs[(b, False)][0]
-                        w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0[rate][::-1], left=np.nan, right=np.nan)
-                        axes[1, j].plot(h, 100 * (s[rate][late] / w0 - 1), label=title, **dict(kw, color="k"))
+                    axes[2, j].plot(h, dpdz, label=title, **dict(kw, color="k"))
+                    if effect is not None:
+                        axes[1, j].plot(h, effect, label=title, **dict(kw, color="k"))
     for j, b in enumerate(widths):
         for i, y in enumerate(["mass flow, full 60 mm depth [kg/s]", "air effect at the same fill level [%]",
                                "outlet air dp/dz [Pa/m] (0.1 s mean)"]):
@@ -187,23 +183,36 @@ def plot_levels(by, levels, path):
     gc.plots.save(fig, path)
 
 
+def level_curves(runs, b, air, rate):
+    """One run's curves against the fill level [mm], once the 0.1 s windows are full and
+    while a bed is left: (h, its rate, and with air its outlet dp/dz and its air effect [%]
+    against its own dry rate at the same fill level, which falls monotonically; None where
+    there is no air or no dry run)."""
+    s = runs[(b, air)][0]
+    late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
+    h, w = s["fill_level_m"][late] * 1e3, s[rate][late]
+    if not air:
+        return h, w, None, None
+    effect = None
+    if (b, False) in runs:
+        s0 = runs[(b, False)][0]
+        w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0[rate][::-1], left=np.nan, right=np.nan)
+        effect = 100 * (w / w0 - 1)
+    return h, w, s["outlet_dpdz_Pa_m_mean"][late], effect
+
+
 def draw(axes, runs, rate, style, label, tag):
-    """One level's curves: its rate against time and fill level, and with air its outlet
-    dp/dz and its air effect (against its own dry rate at the same fill level, which falls
-    monotonically) against the fill level, once the 0.1 s windows are full and while a
-    bed is left."""
+    """One level's curves: its rate against time, and against the fill level what
+    level_curves gives."""
     for (b, air), (s, _) in sorted(runs.items()):
         c, kw = COLOURS[b], style(b, air)
         axes[0, 0].plot(s["t"], s[rate], color=c, label=label(b, air), **kw)
-        late = (s["t"] >= P.WHOLE_BANDS_FROM) & (s["fill_level_m"] > 1e-3)
-        h = s["fill_level_m"][late] * 1e3
-        axes[0, 1].plot(h, s[rate][late], color=c, label=label(b, air), **kw)
+        h, w, dpdz, effect = level_curves(runs, b, air, rate)
+        axes[0, 1].plot(h, w, color=c, label=label(b, air), **kw)
         if air:
-            axes[1, 1].plot(h, s["outlet_dpdz_Pa_m_mean"][late], color=c, label=f"b = {b} mm{tag}", **kw)
-            if (b, False) in runs:
-                s0 = runs[(b, False)][0]
-                w0 = np.interp(h, s0["fill_level_m"][::-1] * 1e3, s0[rate][::-1], left=np.nan, right=np.nan)
-                axes[1, 0].plot(h, 100 * (s[rate][late] / w0 - 1), color=c, label=f"b = {b} mm{tag}", **kw)
+            axes[1, 1].plot(h, dpdz, color=c, label=f"b = {b} mm{tag}", **kw)
+            if effect is not None:
+                axes[1, 0].plot(h, effect, color=c, label=f"b = {b} mm{tag}", **kw)
 
 
 def plot(by, cont, path):
