@@ -67,6 +67,7 @@ def numbers(a, b_mm, air):
     if not s >= 1.0:
         raise gc.CaseError(f"coarse-graining factor s = {s}, expected >= 1")
     d = s * d_mean
+    rolling = f" rolling_friction {a.rolling_model}" if a.rolling else ""   # every wall/gran and pair style
     # the DEM and the air in a thin periodic slice of the depth (one cell, empty
     # sides), or --full-depth: the silo's 60 mm between front and back walls
     # (issue 22: the slice reduction measured)
@@ -99,7 +100,7 @@ def numbers(a, b_mm, air):
                 ABOVE_X=b / 2 + z_above * math.tan(theta) + 1e-6, ABOVE_Z_LO=z_above - 1e-4,
                 ABOVE_Z_HI=z_above + 1e-4, SKIN=0.3 * d, YOUNGS=youngs, MU_W=P.WALL_FRICTION,
                 COHESION=a.cohesion, K_COH=k_coh, ROLLING_MU=a.rolling,
-                ROLLING=f" rolling_friction {a.rolling_model}" if a.rolling else "",   # also in depth()
+                ROLLING=rolling,
                 ROLLING_FIX=f"fix m6 all property/global coefficientRollingFriction peratomtypepair 2 {mu_r} {mu_r} {mu_r} {mu_r}"
                 if a.rolling else "# (none: --rolling 0)", R_TYPE=s * P.D_MEAN_PSD / 2, CHUNK=chunk,
                 SOFT_PARTICLES="soft_particles  yes             # LIGGGHTS asks for this below E = 5e6 Pa"
@@ -108,7 +109,7 @@ def numbers(a, b_mm, air):
                 FILL="../fill", SEED=a.seed, CG_EVERY=round(cg_every / dem_dt),
                 GRANAIR_ROOT=os.path.normpath(os.path.join(HERE, "..", "..")),
                 N_PARCELS=round(P.PACKING_SETTLED * P.fill_area(b, fill) * slice_ / (s ** 3 * (math.pi / 6 * d3))),
-                **depth(a.full_depth, slice_, h, f" rolling_friction {a.rolling_model}" if a.rolling else ""))
+                **depth(a.full_depth, slice_, h, rolling))
 
 
 def depth(full, slice_, h, rolling):
