@@ -38,7 +38,6 @@ the window), cost.txt (CPU s of all chunks, cells); summary.csv over the runs
 in OUT with the DEM-CFD demo's and study's rates.
 """
 import os
-import re
 
 import numpy as np
 
@@ -59,24 +58,21 @@ def numbers(a, b_mm, air):
     v = continuum.numbers(c, b_mm, air)
     phi = v["RHO_B"] / P.RHO_P
     dx = b_mm * 1e-3 / a.mesh
+    v.update(gc.two_fluid.closure(phi))
+    mu_factor = a.air_mu_factor if air else gc.two_fluid.DRY_MU_FACTOR
     v.update(D=P.D_LACTOSE, D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81,
-             RHO_F=P.AIR_RHO, MU=P.AIR_MU * (a.air_mu_factor if air else 0.01), AIR_EOS="rhoConst",
-             DRAG_LAW="ErgunGidaspow", PHI_FILL=phi,
-             # contact pressure: zero 0.01 below the fill's packing, 49 Pa at it
-             ALPHA_MIN_FRICTION=phi - 0.01, ALPHA_MAX=phi + 0.04, FR=0.05, FR_ETA=2, FR_P=5,
-             ALPHA_DELTA_MIN=0.005, SHEAR_PRESSURE=a.shear_pressure, FACE_MOMENTUM="no",
-             # one outer corrector: ~3x faster than three, stable here (the
-             # runs of the session report switched from 3 to 1 at t ~ 0.014 s)
-             N_OUTER=1,
-             Y_MID=P.DEPTH / 2,
+             RHO_F=P.AIR_RHO, MU=P.AIR_MU * mu_factor, AIR_EOS="rhoConst",
+             DRAG_LAW="ErgunGidaspow", PHI_FILL=phi, SHEAR_PRESSURE=a.shear_pressure,
              # the dp/dz probes at the cell centres beside the slot plane: a probe
              # returns its cell's value, so probes at +-1 mm read the centres at
              # +-dx/2 (+-1.25 mm at b/4) and (p1 - p2)/2 mm overstated dp/dz by 25 %
-             PROBE_Z=b_mm * 1e-3 / (2 * a.mesh), AIR_MU_FACTOR=a.air_mu_factor if air else 0.01,
+             PROBE_Z=b_mm * 1e-3 / (2 * a.mesh), AIR_MU_FACTOR=mu_factor,
+             TITLE=f"The wedge silo, b = {b_mm} mm (cases/wedge-silo/twofluid.py, --fills {a.fills})",
              # the slot row's solid fraction: a probe at each of its N cell centres
              # (equal cells, so their mean is the row's mean)
              SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dx - v['B']:.9g} {P.DEPTH / 2:.6g} {dx / 2:.9g})"
                                       for i in range(a.mesh)))
+    v["ORIFICE_PROBES"] = " ".join(f"(0 {P.DEPTH / 2:.6g} {z:.9g})" for z in (v["PROBE_Z"], -v["PROBE_Z"]))
     if a.shear_pressure_phi_max is not None:
         # p_I's packing at I = 0 (MuIFrictionalStress: the rheology block's phiMax is
         # read by p_I only, mu(I) does not use it); the span phiMax - phiMin is kept
@@ -149,87 +145,13 @@ boundary
     gc.template.write(os.path.join(run, "system", "topoSetDict"), topo)
 
 
-def rows_of(path, columns):
-    """The first `columns` numbers of each row of a function object's file: rows with the
-    file's usual number of fields only (a solver killed mid-write leaves a cut row, or a
-    run of NUL bytes where the restart's rows begin: measured, a b = 5 mm run)."""
-    rows = []
-    with open(path, errors="replace") as fh:
-        for line in fh:
-            line = line.replace("\0", "").strip()
-            if line and not line.startswith("#"):
-                rows.append(line.split())
-    if not rows:
-        return np.empty((0, columns))
-    n = max(set(map(len, rows)), key=[len(r) for r in rows].count)     # the usual number of fields
-    out = []
-    for r in rows:
-        if len(r) == n:
-            try:
-                out.append([float(x) for x in r[:columns]])
-            except ValueError:
-                continue
-    return np.array(out, ndmin=2)
-
-
-def read_series(run, name, file, columns):
-    """Rows of a function object's output over every restart, in time order: the
-    files postProcessing/<name>/<t0>/<file> or, where a restart from t0 wrote
-    into the same folder, the newest of them (<stem>_<t>.dat beside it). A
-    later restart's rows replace an earlier file's from its first time on (a
-    chunk killed past its last written time is run again from there)."""
-    base = os.path.join(run, "postProcessing", name)
-    stem, ext = os.path.splitext(file)
-    parts = []
-    for sub in os.listdir(base):
-        # a restart from a folder's time writes <stem>_<t> beside the first run's
-        # file (surface values) or overwrites it (probes): the newest file counts
-        files = [os.path.join(base, sub, f) for f in os.listdir(os.path.join(base, sub))
-                 if f == file or (f.startswith(stem + "_") and f.endswith(ext))]
-        if files:
-            d = rows_of(max(files, key=os.path.getmtime), columns)
-            if len(d):
-                parts.append(d)
-    if not parts:
-        raise gc.CaseError(f"{base}: no {file} written")
-    parts.sort(key=lambda d: d[0, 0])
-    rows = [d[d[:, 0] < nxt[0, 0]] for d, nxt in zip(parts, parts[1:])] + [parts[-1]]
-    return np.concatenate(rows)
-
-
 def post(run, out, name, v, wall=None):
     os.makedirs(out, exist_ok=True)
-    pr = read_series(run, "orificePressure", "p", 3)
-    row = read_series(run, "slotRow", "alpha.particles", 1 + v["N"])
-    # The main run's probes overwrite the start-up's file, the surface values
-    # keep it beside theirs: the rows before the probes' first time (the
-    # start-up's first ~11 us) are left out, so every series has the same steps
-    flows = {patch: (lambda d: d[d[:, 0] >= pr[0, 0] * (1 - 1e-9)])(
-                 read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2))
-             for patch in ("outlet", "freefall", "atmosphere")}
-    t = flows["outlet"][:, 0]
-    w = flows["outlet"][:, 1] + flows["freefall"][:, 1]      # boundary fluxes are positive outwards
-    n = min(len(t), len(pr), len(flows["freefall"]), len(row))
-    same = np.isclose(t[:n], pr[:n, 0], rtol=1e-6) & np.isclose(t[:n], row[:n, 0], rtol=1e-6)
-    if not same[:max(1, n // 2)].all():
-        raise gc.CaseError(f"{run}/postProcessing: the flow and probe files are not on the same time steps")
-    if not same.all():
-        # a chunk killed mid-write loses probe rows (rows_of): the series ends before
-        # them, said here (measured once, in the tail of a b = 5 mm whole discharge)
-        k = int(np.argmin(same))
-        print(f"wedge-silo two-fluid {name}: the probe rows stop matching the flow rows at t = {t[k]:g} s "
-              f"(a chunk killed mid-write): the series ends there, not at {t[n - 1]:g} s", flush=True)
-        n = k
-    t, w, dpdz = t[:n], w[:n], (pr[:n, 1] - pr[:n, 2]) / (2 * v["PROBE_Z"])
-    alpha = row[:n, 1:].mean(axis=1)
+    t, w, dpdz, alpha = gc.two_fluid.series(run, 2 * v["PROBE_Z"], v["N"], f"wedge-silo two-fluid {name}")
     dt = gc.series.step_lengths(t)
     # timeseries.csv: means over 1 ms (each row t ends its block; a b/8 run has
     # ~100 steps per ms); the window means below are over the steps themselves
-    centres, blocks = gc.series.window_means(t, dt, [w, dpdz, alpha], SERIES_BLOCK, keep_last=0.0)
-    ends = np.empty_like(centres)
-    start = float(t[0] - dt[0])
-    for i, c in enumerate(centres):
-        ends[i] = start = 2 * c - start
+    ends, blocks = gc.two_fluid.block_means(t, dt, [w, dpdz, alpha], SERIES_BLOCK)
     out_t = np.cumsum(w * dt)
     # the bed height that holds the powder left at each block's end (the DEM's and
     # the continuum's fill_level_m: whole_widths.py draws every level against it)
@@ -252,11 +174,7 @@ def post(run, out, name, v, wall=None):
                                                              ("discharged_g", out_kg * 1e3), ("fill_g", v["FILL_G"])])
     air = bool(v["AIR"])
     if wall is None:    # from the solver logs (start-up and main run)
-        wall = 0.0
-        for log in ("twoPhaseEulerFoam_startup.log", "twoPhaseEulerFoam.log"):
-            with open(os.path.join(run, "log", log)) as fh:
-                clock = re.findall(r"ClockTime = ([\d.eE+-]+) s", fh.read())
-            wall += float(clock[-1]) if clock else 0.0
+        wall = gc.two_fluid.wall_seconds(run)
     gc.levels.write(os.path.join(out, "level.json"), case="wedge-silo", level="two-fluid",
                     model=(f"two-fluid twoPhaseEulerFoam + granair muI (mu_s {v['MU_S']:.3f}) and ErgunGidaspow, "
                            f"Coulomb walls, staircase mesh b/{v['N']}, "
@@ -272,33 +190,17 @@ def post(run, out, name, v, wall=None):
                 slot_row_alpha=A, t0_s=t0, t1_s=t1, discharged_g=out_kg * 1e3, fill_g=v["FILL_G"])
 
 
-def out_by(run, fill_g, until):
-    """The time the share `until` of the fill had left (0.5: the DEM window's end), or None: from the
-    outlet and free-fall flow files as far as they are written (read as post()
-    reads them; a file caught mid-row is read again at the next poll)."""
-    try:
-        o, f = (read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2) for patch in ("outlet", "freefall"))
-    except (ValueError, gc.CaseError):
-        return None
-    n = min(len(o), len(f))
-    out = np.cumsum((o[:n, 1] + f[:n, 1]) * gc.series.step_lengths(o[:n, 0]))
-    k = np.nonzero(out >= until * 1e-3 * fill_g)[0]
-    return float(o[k[0], 0]) if k.size else None
-
-
 def run_one(a, b_mm, air):
-    """One run in chunks of --chunk s (gc.chunks.loop, record log/chunks.json):
-    the mesh and the start-up, then twoPhaseEulerFoam from its newest time to
-    the next chunk end, until --end or until half the fill has left (the end
-    of the DEM case's window; a chunk is stopped there with writeNow). With
-    --resume a run folder set up with the same numbers goes on where it
-    stopped (a longer --end goes further)."""
+    """One run in chunks of --chunk s (gc.two_fluid.run: the mesh and the
+    start-up, then twoPhaseEulerFoam from its newest time to the next chunk
+    end, until --end or until half the fill has left, the end of the DEM
+    case's window). With --resume a run folder set up with the same numbers
+    goes on where it stopped (a longer --end goes further)."""
     name = f"b{b_mm}_{'air' if air else 'noair'}"
     run = os.path.join(a.out, "runs", name)
     v = numbers(a, b_mm, air)
     keep = {k: x for k, x in v.items() if k != "END"}      # a resumed run may go further
     values = os.path.join(run, "values.json")
-    control = os.path.join(run, "system", "controlDict")
     if a.resume and os.path.exists(values):
         gc.template.check_values(values, keep, "rerun without --resume to start again")
     else:
@@ -309,60 +211,8 @@ def run_one(a, b_mm, air):
     if a.setup_only:
         return None
 
-    def step(rec):
-        if not rec["chunks"]:
-            cpu = 0.0
-            for cmd in (["blockMesh"], ["topoSet"], ["subsetMesh", "silo", "-patch", "walls", "-overwrite"]):
-                cpu += gc.runner.run(cmd, run)
-            # subsetMesh maps the fields onto the cut mesh, but the faces it exposes
-            # (the staircase walls) get undefined patch values: the powder's
-            # coulombWallSlip valueFraction came out 1e5 on 62 of 226 wall faces in
-            # one b/4 set-up, 0 on 22 of 346 in a b/8 one, 1 in another (measured),
-            # and a first step with f = 1e5 is violent (outlet dp/dz ~ -1e8 Pa/m).
-            # The template's 0/ fields are uniform: written again, every wall
-            # face starts from the template's values.
-            gc.template.render(T, run, v, ["0"])
-            for cmd in (["checkMesh"], ["setFields"]):
-                cpu += gc.runner.run(cmd, run)
-            print(f"wedge-silo two-fluid {name}: "
-                  f"{gc.foam.checkmesh(os.path.join(run, 'log', 'checkMesh.log'))[0]} cells, "
-                  f"up to t = {a.end:g} s", flush=True)
-            # Start-up: 200 fixed steps of 1 us. With the adjustable step from 1e-5 s
-            # the powder over the open slot blew up in the second step (air 200 m/s and
-            # 3.4 bar in the slot cells, measured); after 0.2 ms the adjustable step is
-            # stable, limited by the relative-velocity Courant number.
-            for key, value in (("endTime", 2e-4), ("deltaT", 1e-6), ("adjustTimeStep", "no")):
-                gc.foam.set_entry(control, key, value)
-            cpu += gc.runner.run(["twoPhaseEulerFoam"], run, "twoPhaseEulerFoam_startup")
-            for key, value in (("startFrom", "latestTime"), ("deltaT", 1e-5), ("adjustTimeStep", "yes")):
-                gc.foam.set_entry(control, key, value)
-            return {"from": 0.0, "to": 2e-4, "cpu_s": cpu, "what": "mesh and start-up"}
-        t0 = gc.foam.time_dirs(run)[-1][0]
-        # "half_out_s": chunks.json of the runs before --until (always 0.5)
-        done = rec["chunks"][-1].get("until_s", rec["chunks"][-1].get("half_out_s"))
-        if done is not None and not a.past_half:
-            return f"{a.until:.0%} of the fill out at t = {done:g} s"
-        if t0 >= a.end - 1e-9:
-            return f"t_end = {a.end:g} s"
-        t1 = min(a.end, (np.floor(t0 / a.chunk + 1e-6) + 1) * a.chunk)
-        gc.foam.set_entry(control, "stopAt", "endTime")
-        gc.foam.set_entry(control, "endTime", f"{t1:.10g}")
-        # OpenFOAM counts write times from the start time and does not write at
-        # endTime: one interval from t0 to t1 makes t1 a write time (a run
-        # stopped at half the fill out starts off the 0.1 s grid)
-        gc.foam.set_entry(control, "writeInterval", f"{t1 - t0:.10g}")
-        print(f"wedge-silo two-fluid {name}: {t0:g} -> {t1:g} s", flush=True)
-        cpu = gc.runner.run(["twoPhaseEulerFoam"], run, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
-                            stop_when=None if a.past_half else lambda: out_by(run, v["FILL_G"], a.until) is not None,
-                            poll=20.0)
-        got, half = gc.foam.time_dirs(run)[-1][0], out_by(run, v["FILL_G"], a.until)
-        if got < t1 - 1e-9 and (half is None or a.past_half):
-            raise gc.CaseError(f"{run}: twoPhaseEulerFoam ended without writing t = {t1:g} s (newest: {got:g} s); "
-                               f"see log/twoPhaseEulerFoam_{t0:g}-{t1:g}.log")
-        return {"from": t0, "to": got, "cpu_s": cpu, "until_s": half}
-
-    rec = gc.chunks.loop(run, step)
-    print(f"wedge-silo two-fluid {name}: {rec['reason']}", flush=True)
+    rec = gc.two_fluid.run(run, T, v, a.end, a.chunk, f"wedge-silo two-fluid {name}", v["FILL_G"], a.until,
+                           a.past_half)
     r = post(run, os.path.join(a.out, name), name, v, wall=sum(c["wall_s"] for c in rec["chunks"]))
     r["cpu_s"] = rec["cpu_s"]
     gc.series.write_keys(os.path.join(a.out, name, "cost.txt"),

@@ -39,6 +39,7 @@
     discharge_counts  a re-fed LIGGGHTS discharge in segments: counts with strays, window rates, the steady rate
     packing_regions  a loose packing's region: a cylinder, a box (sample and inside for dem.loose_packing)
     profile_plots  panels of a study's CG fields and rates: rates with bands, profiles at heights, maps, paraboloids
+    two_fluid   the two-fluid level's chunked runs on a staircase mesh, their flow and probe series
 
 Cases import it as `import granair_cases as gc`; tools/foam-env.sh puts tools/
 on PYTHONPATH (every `./granair` command and every Allrun source it).
@@ -53,4 +54,4 @@ class CaseError(Exception):
 from . import foam, template, runner, chunks, dem, series, powder, closed_forms, gci, levels, checks, plots, cli, calibration, cg, numerics  # noqa: E402,F401,E501
 from . import cg_grids, outlet, fits, stl_walls, field_maps, strain, wall_rings, study, size_study, dilatancy  # noqa: E402,F401
 from . import tally, tables, cg_slab, phi_i, chunk_inputs, linear_contact, silo_walls, layered_fill  # noqa: E402,F401
-from . import arch, cg_runs, discharge_counts, profile_plots, packing_regions  # noqa: E402,F401
+from . import arch, cg_runs, discharge_counts, profile_plots, packing_regions, two_fluid  # noqa: E402,F401

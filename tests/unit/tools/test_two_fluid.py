@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""The two-fluid level's readers (tools/granair_cases/two_fluid.py) on hand-made
+function-object files: a restart's rows replace the earlier file's from its first
+time on, a row cut by a killed solver is dropped, the flow and probe series are
+put on the same steps (dp/dz = the probes' difference over their distance, the
+orifice row's mean), the share-of-fill time, and block means that end at the
+blocks' ends."""
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+from granair_cases import two_fluid
+
+failures = []
+
+
+def check(name, got, want, tol=1e-12):
+    if not np.allclose(got, want, rtol=0, atol=tol):
+        failures.append(f"{name}: got {got!r}, expected {want!r}")
+
+
+def write(path, header, rows):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as fh:
+        fh.write(header)
+        for r in rows:
+            fh.write(r + "\n")
+
+
+with tempfile.TemporaryDirectory() as run:
+    pp = os.path.join(run, "postProcessing")
+    steps = [0.001 * k for k in range(1, 11)]              # 10 steps of 1 ms
+    # outlet and free-fall flows: the first run to 6 ms, a restart from 5 ms (its
+    # rows replace the first file's from 5 ms on) to 10 ms; outlet 2 g/s, free fall 1 g/s
+    for patch, w in (("outlet", 2e-3), ("freefall", 1e-3)):
+        write(os.path.join(pp, f"{patch}Flow", "0", "surfaceFieldValue.dat"), "# Time sum(alphaRhoPhi)\n",
+              [f"{t:g} {9.0 if t > 0.0045 else w}" for t in steps[:6]])
+        write(os.path.join(pp, f"{patch}Flow", "0.005", "surfaceFieldValue.dat"), "# Time sum(alphaRhoPhi)\n",
+              [f"{t:g} {w}" for t in steps[4:]])
+    # probes: p above and below (100 Pa apart over 2 mm: -5e4 Pa/m), and a row of two
+    # probes at 0.5 and 0.7; the second run's file ends in a row cut mid-write
+    write(os.path.join(pp, "orificePressure", "0", "p"), "# Probe 0 (0 0 1)\n# Probe 1 (0 0 -1)\n",
+          [f"{t:g} 100000 100100" for t in steps[:6]])
+    write(os.path.join(pp, "orificePressure", "0.005", "p"), "# Probe 0 (0 0 1)\n# Probe 1 (0 0 -1)\n",
+          [f"{t:g} 100000 100100" for t in steps[4:]] + ["0.011 1000"])
+    write(os.path.join(pp, "slotRow", "0", "alpha.particles"), "# Probe 0\n# Probe 1\n",
+          [f"{t:g} 0.5 0.7" for t in steps])
+    os.utime(os.path.join(pp, "orificePressure", "0.005", "p"))
+
+    rows = two_fluid.rows_of(os.path.join(pp, "orificePressure", "0.005", "p"), 3)
+    check("a cut row is dropped", len(rows), 6)
+    flow = two_fluid.read_series(run, "outletFlow", "surfaceFieldValue.dat", 2)
+    check("restart: steps", flow[:, 0], steps)
+    check("restart: the later file's rows from its first time on", flow[:, 1], [2e-3] * 10)
+    t, w, dpdz, alpha = two_fluid.series(run, 2e-3, 2)
+    check("series: steps", t, steps)
+    check("series: outlet + free fall", w, [3e-3] * 10)
+    check("series: dp/dz", dpdz, [-5e4] * 10, 1e-6)
+    check("series: orifice row mean", alpha, [0.6] * 10)
+    # 3 g/s for 10 ms: 0.03 g out; a third of a 0.09 g fill is out at the step that reaches it
+    check("out_by", two_fluid.out_by(run, 0.09, 1 / 3), 0.010)
+    if two_fluid.out_by(run, 0.09, 0.5) is not None:
+        failures.append("out_by: half of the fill is not out yet, expected None")
+
+# block means over 5 ms of a ramp on 1 ms steps: the blocks end at 5 and 10 ms
+t = np.array(steps)
+ends, (m,) = two_fluid.block_means(t, np.full(10, 1e-3), [t * 1e3], 0.005)
+check("block ends", ends, [0.005, 0.010])
+check("block means", m, [3.0, 8.0])
+
+c = two_fluid.closure(0.6)
+check("closure: contact pressure zero 0.01 below the fill", c["ALPHA_MIN_FRICTION"], 0.59)
+check("closure: alphaMax 0.04 above it", c["ALPHA_MAX"], 0.64)
+
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)
+print("two_fluid: all checks pass")

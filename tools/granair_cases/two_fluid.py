@@ -1,0 +1,225 @@
+"""The two-fluid level's runs (Debian's twoPhaseEulerFoam with libgranairTwoFluid.so,
+docs/two-fluid-model.md) on a staircase mesh, shared by cases/wedge-silo/twofluid.py
+and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-fluid/template
+(geometry-free but for the values a case fills in).
+
+    rec = run(run_dir, template, values, end, chunk, label)      the chunked run, resumable
+    t, w, dpdz, alpha = series(run_dir, probe_dz, probes)        the run's rows, every time step
+    ends, means = block_means(t, dt, [w, dpdz, alpha], block)     their means over blocks of time
+    out_by(run_dir, fill_g, share)                               when that share of the fill had left
+    closure(phi_fill)                                            the frictional closure's numbers
+
+A case writes system/blockMeshDict (its blocks of orthogonal cells) and
+system/topoSetDict (a cellSet `silo` of the cells inside its hopper); the first
+chunk meshes (blockMesh, topoSet, subsetMesh: the exposed faces become the
+patch `walls`), fills (setFields) and starts (200 fixed steps of 1 us), each
+later chunk runs the solver from its newest time to the next multiple of
+`chunk`. Why staircase cells: Debian's twoPhaseEulerFoam calls fvc::reconstruct,
+which with Debian's build gives wrong vectors in non-orthogonal cells
+(docs/two-fluid-model.md). The template's function objects give the powder's
+flow through `outlet` and `freefall`, the air pressure at two probes on the axis
+(`orificePressure`, dp/dz = their difference / probe_dz) and the solid fraction
+at the probes of the orifice row (`slotRow`).
+"""
+import os
+import re
+
+import numpy as np
+
+from . import CaseError, chunks, foam, runner, series as _series, template
+
+# the patches the powder leaves through, their flows summed (positive outwards)
+OUT_PATCHES = ("outlet", "freefall")
+# A dry run keeps the air (the solver has two phases) at this share of its
+# viscosity, so Ergun's viscous term is 1/100 of the real one (the inertial term
+# stays: the wedge silo's dry slot dp/dz is 1/9 to 1/13 of its air runs',
+# measured); its density stays (a lighter air, 1/100 or 1/10 of it, stopped in
+# the start-up with a negative air temperature from the energy equation the
+# solver always solves, measured).
+DRY_MU_FACTOR = 0.01
+
+
+def closure(phi_fill):
+    """The template's numbers of the frictional closure (cfd-side/twoFluid/MuIFrictionalStress.H)
+    and of the solver, for a fill at solid fraction phi_fill: the contact pressure is
+    zero 0.01 below the fill's packing and 49 Pa at it; one outer corrector per step
+    (~3x faster than three and stable on the wedge silo: its runs switched from 3 to
+    1 at t ~ 0.014 s); the shear-induced pressure p_I on (without it the wedge silo's
+    powder left its slot as a dense plug and the air hardly slowed it,
+    docs/two-fluid-model.md "On a silo")."""
+    return dict(ALPHA_MIN_FRICTION=phi_fill - 0.01, ALPHA_MAX=phi_fill + 0.04, FR=0.05, FR_ETA=2, FR_P=5,
+                ALPHA_DELTA_MIN=0.005, SHEAR_PRESSURE="on", FACE_MOMENTUM="no", N_OUTER=1)
+
+
+def block_means(t, dt, columns, block):
+    """Means of the columns over blocks of `block` s of the time steps (t the step
+    ends, dt their lengths): the time each block ends and the means."""
+    centres, means = _series.window_means(t, dt, columns, block, keep_last=0.0)
+    ends = np.empty_like(centres)
+    start = float(t[0] - dt[0])
+    for i, c in enumerate(centres):
+        ends[i] = start = 2 * c - start
+    return ends, means
+
+
+def rows_of(path, columns):
+    """The first `columns` numbers of each row of a function object's file: rows with the
+    file's usual number of fields only (a solver killed mid-write leaves a cut row, or a
+    run of NUL bytes where the restart's rows begin: measured, a b = 5 mm run)."""
+    rows = []
+    with open(path, errors="replace") as fh:
+        for line in fh:
+            line = line.replace("\0", "").strip()
+            if line and not line.startswith("#"):
+                rows.append(line.split())
+    if not rows:
+        return np.empty((0, columns))
+    n = max(set(map(len, rows)), key=[len(r) for r in rows].count)     # the usual number of fields
+    out = []
+    for r in rows:
+        if len(r) == n:
+            try:
+                out.append([float(x) for x in r[:columns]])
+            except ValueError:
+                continue
+    return np.array(out, ndmin=2)
+
+
+def read_series(run, name, file, columns):
+    """Rows of a function object's output over every restart, in time order: the
+    files postProcessing/<name>/<t0>/<file> or, where a restart from t0 wrote
+    into the same folder, the newest of them (<stem>_<t>.dat beside it). A
+    later restart's rows replace an earlier file's from its first time on (a
+    chunk killed past its last written time is run again from there)."""
+    base = os.path.join(run, "postProcessing", name)
+    stem, ext = os.path.splitext(file)
+    parts = []
+    for sub in os.listdir(base):
+        # a restart from a folder's time writes <stem>_<t> beside the first run's
+        # file (surface values) or overwrites it (probes): the newest file counts
+        files = [os.path.join(base, sub, f) for f in os.listdir(os.path.join(base, sub))
+                 if f == file or (f.startswith(stem + "_") and f.endswith(ext))]
+        if files:
+            d = rows_of(max(files, key=os.path.getmtime), columns)
+            if len(d):
+                parts.append(d)
+    if not parts:
+        raise CaseError(f"{base}: no {file} written")
+    parts.sort(key=lambda d: d[0, 0])
+    rows = [d[d[:, 0] < nxt[0, 0]] for d, nxt in zip(parts, parts[1:])] + [parts[-1]]
+    return np.concatenate(rows)
+
+
+def out_by(run, fill_g, share):
+    """The time the share of the fill [g] had left (0.5: the DEM window's end), or
+    None: from the outlet and free-fall flow files as far as they are written (a
+    file caught mid-row is read again at the next poll)."""
+    try:
+        o, f = (read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2) for patch in OUT_PATCHES)
+    except (ValueError, CaseError):
+        return None
+    n = min(len(o), len(f))
+    out = np.cumsum((o[:n, 1] + f[:n, 1]) * _series.step_lengths(o[:n, 0]))
+    k = np.nonzero(out >= share * 1e-3 * fill_g)[0]
+    return float(o[k[0], 0]) if k.size else None
+
+
+def series(run, probe_dz, probes, label="two-fluid"):
+    """Every time step of a run: t, the powder's mass flow out [kg/s] (outlet + free
+    fall, positive out), the air's dp/dz between the two axis probes [Pa/m], the
+    mean solid fraction of the orifice row's `probes` probes. The start-up's rows before
+    the probes' first time (its first ~11 us) are left out, so every series has
+    the same steps; a chunk killed mid-write, which loses probe rows, ends them
+    there (said)."""
+    pr = read_series(run, "orificePressure", "p", 3)
+    row = read_series(run, "slotRow", "alpha.particles", 1 + probes)
+    flows = {patch: (lambda d: d[d[:, 0] >= pr[0, 0] * (1 - 1e-9)])(
+                 read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2))
+             for patch in OUT_PATCHES}
+    t = flows["outlet"][:, 0]
+    w = flows["outlet"][:, 1] + flows["freefall"][:, 1]      # boundary fluxes are positive outwards
+    n = min(len(t), len(pr), len(flows["freefall"]), len(row))
+    same = np.isclose(t[:n], pr[:n, 0], rtol=1e-6) & np.isclose(t[:n], row[:n, 0], rtol=1e-6)
+    if not same[:max(1, n // 2)].all():
+        raise CaseError(f"{run}/postProcessing: the flow and probe files are not on the same time steps")
+    if not same.all():
+        k = int(np.argmin(same))
+        print(f"{label}: the probe rows stop matching the flow rows at t = {t[k]:g} s "
+              f"(a chunk killed mid-write): the series ends there, not at {t[n - 1]:g} s", flush=True)
+        n = k
+    return t[:n], w[:n], (pr[:n, 1] - pr[:n, 2]) / probe_dz, row[:n, 1:].mean(axis=1)
+
+
+def wall_seconds(run):
+    """The solver's own wall clock over a run's logs (start-up and main), for a
+    level.json of a run whose chunk record is not at hand."""
+    wall = 0.0
+    for log in ("twoPhaseEulerFoam_startup.log", "twoPhaseEulerFoam.log"):
+        with open(os.path.join(run, "log", log)) as fh:
+            clock = re.findall(r"ClockTime = ([\d.eE+-]+) s", fh.read())
+        wall += float(clock[-1]) if clock else 0.0
+    return wall
+
+
+def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, past_half=False):
+    """The chunked run (gc.chunks.loop, record log/chunks.json): the mesh and the
+    start-up, then twoPhaseEulerFoam from its newest time to the next chunk end,
+    until `end` or until the share `until` of the fill has left (a chunk is
+    stopped there with writeNow; past_half: on to `end` all the same). The case
+    has rendered the template and written its blockMeshDict and topoSetDict."""
+    control = os.path.join(run_dir, "system", "controlDict")
+
+    def step(rec):
+        if not rec["chunks"]:
+            cpu = 0.0
+            for cmd in (["blockMesh"], ["topoSet"], ["subsetMesh", "silo", "-patch", "walls", "-overwrite"]):
+                cpu += runner.run(cmd, run_dir)
+            # subsetMesh maps the fields onto the cut mesh, but the faces it exposes
+            # (the staircase walls) get undefined patch values: the powder's
+            # coulombWallSlip valueFraction came out 1e5 on 62 of 226 wall faces in
+            # one b/4 set-up, 0 on 22 of 346 in a b/8 one, 1 in another (measured),
+            # and a first step with f = 1e5 is violent (outlet dp/dz ~ -1e8 Pa/m).
+            # The template's 0/ fields are uniform: written again, every wall
+            # face starts from the template's values.
+            template.render(template_dir, run_dir, values, ["0"])
+            for cmd in (["checkMesh"], ["setFields"]):
+                cpu += runner.run(cmd, run_dir)
+            print(f"{label}: {foam.checkmesh(os.path.join(run_dir, 'log', 'checkMesh.log'))[0]} cells, "
+                  f"up to t = {end:g} s", flush=True)
+            # Start-up: 200 fixed steps of 1 us. With the adjustable step from 1e-5 s
+            # the wedge silo's powder over the open slot blew up in the second step
+            # (air 200 m/s and 3.4 bar in the slot cells, measured); after 0.2 ms the
+            # adjustable step is stable, limited by the relative-velocity Courant number.
+            for key, value in (("endTime", 2e-4), ("deltaT", 1e-6), ("adjustTimeStep", "no")):
+                foam.set_entry(control, key, value)
+            cpu += runner.run(["twoPhaseEulerFoam"], run_dir, "twoPhaseEulerFoam_startup")
+            for key, value in (("startFrom", "latestTime"), ("deltaT", 1e-5), ("adjustTimeStep", "yes")):
+                foam.set_entry(control, key, value)
+            return {"from": 0.0, "to": 2e-4, "cpu_s": cpu, "what": "mesh and start-up"}
+        t0 = foam.time_dirs(run_dir)[-1][0]
+        # "half_out_s": chunks.json of the runs before --until (always 0.5)
+        done = rec["chunks"][-1].get("until_s", rec["chunks"][-1].get("half_out_s"))
+        if done is not None and not past_half:
+            return f"{until:.0%} of the fill out at t = {done:g} s"
+        if t0 >= end - 1e-9:
+            return f"t_end = {end:g} s"
+        t1 = min(end, (np.floor(t0 / chunk + 1e-6) + 1) * chunk)
+        foam.set_entry(control, "stopAt", "endTime")
+        foam.set_entry(control, "endTime", f"{t1:.10g}")
+        # OpenFOAM counts write times from the start time and does not write at
+        # endTime: one interval from t0 to t1 makes t1 a write time (a run
+        # stopped at half the fill out starts off the chunk grid)
+        foam.set_entry(control, "writeInterval", f"{t1 - t0:.10g}")
+        print(f"{label}: {t0:g} -> {t1:g} s", flush=True)
+        cpu = runner.run(["twoPhaseEulerFoam"], run_dir, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
+                         stop_when=None if past_half else lambda: out_by(run_dir, fill_g, until) is not None,
+                         poll=20.0)
+        got, half = foam.time_dirs(run_dir)[-1][0], out_by(run_dir, fill_g, until)
+        if got < t1 - 1e-9 and (half is None or past_half):
+            raise CaseError(f"{run_dir}: twoPhaseEulerFoam ended without writing t = {t1:g} s (newest: {got:g} s); "
+                            f"see log/twoPhaseEulerFoam_{t0:g}-{t1:g}.log")
+        return {"from": t0, "to": got, "cpu_s": cpu, "until_s": half}
+
+    rec = chunks.loop(run_dir, step)
+    print(f"{label}: {rec['reason']}", flush=True)
+    return rec
