@@ -13,6 +13,7 @@
 #include "ScreenErrorEcho.hpp"
 #include "atom.h"
 #include "comm.h"
+#include "core/CapacityBytes.hpp"
 #include "core/Collective.hpp"
 #include "core/Error.hpp"
 #include "domain.h"
@@ -303,6 +304,10 @@ void LiggghtsDriver::getParticles(std::vector<ParticleState>& out) {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     requireSpheres(atom);
     const int nlocal = atom.nlocal;
+    // Grown by an eighth, not doubled, when this rank's particles grow (they
+    // move between ranks): the memory report counts capacities (CapacityBytes.hpp).
+    reserveGrowing(out, static_cast<std::size_t>(nlocal));
+    reserveGrowing(lastTags_, static_cast<std::size_t>(nlocal));
     out.resize(nlocal);
     lastTags_.resize(nlocal);
     // In a periodic box LIGGGHTS wraps a particle that crossed a periodic

@@ -52,6 +52,7 @@ int TagCellHints::lastCell(std::size_t j, std::int64_t id) {
     }
     ++tagSearches_;
     if (!sorted_) {
+        reserveGrowing(byId_, lastIds_.size());
         byId_.resize(lastIds_.size());
         std::iota(byId_.begin(), byId_.end(), 0);
         sortByTag(byId_.data(), byId_.data() + byId_.size());

@@ -24,6 +24,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/CapacityBytes.hpp"
+
 namespace granair {
 
 class TagCellHints {
@@ -43,6 +45,7 @@ public:
     // read the old ones in place, so no second tag list is kept).
     template <class TagOf>
     void endStep(std::size_t n, const TagOf& tagOf) {
+        reserveGrowing(lastIds_, n);  // by an eighth, not doubled, as a rank's particles grow
         lastIds_.resize(n);
         for (std::size_t j = 0; j < n; ++j) lastIds_[j] = key(tagOf(j));
         sorted_ = false;
