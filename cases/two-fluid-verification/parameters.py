@@ -12,6 +12,7 @@ AIR_EOS = "rhoConst"
 W = 0.01                       # width of the one cell across [m] (sides empty)
 ALPHA_DELTA_MIN = 0.005        # bound of the contact law's divergence at alphaMax
 SHEAR_PRESSURE = "off"
+DRAG_SCALE = 1.0               # granair drag's scale: the law's drag (a dry reference would take less)
 
 # The mu(I) block of the solid phase (coupling/rheology/MuI.hpp), the form the
 # continuum solver reads; d and rhoP are each test's own.

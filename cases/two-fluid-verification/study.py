@@ -36,6 +36,7 @@ TESTS = ("bed", "settling", "consolidation")
 BAD_INPUT = [
     ("bad_drag_law", dict(DRAG_LAW="Ergn"), ["phaseProperties", "Ergn", "ErgunGidaspow", "WenYu"]),
     ("bad_rheology_rho", dict(RHO_P=2400.0), ["muICoeffs.rheology", "rhoP 2500", "thermophysicalProperties.particles"]),
+    ("bad_drag_scale", dict(DRAG_SCALE=0.0), ["phaseProperties", "scale 0", "expected 0 < scale <= 1"]),
 ]
 
 

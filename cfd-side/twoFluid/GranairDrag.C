@@ -27,13 +27,21 @@ Foam::dragModels::granairDrag::granairDrag
 )
 :
     dragModel(dict, pair, registerObject),
-    diameter_(dict.getOrDefault<scalar>("diameter", -1))
+    diameter_(dict.getOrDefault<scalar>("diameter", -1)),
+    scale_(dict.getOrDefault<scalar>("scale", 1))
 {
     if (dict.found("diameter") && !(diameter_ > 0))
     {
         FatalIOErrorInFunction(dict)
             << "drag " << pair.name() << ": diameter " << diameter_
             << " m: expected a particle diameter > 0 (or no entry: the phase's d)" << exit(FatalIOError);
+    }
+    if (!(scale_ > 0 && scale_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "drag " << pair.name() << ": scale " << scale_
+            << ": expected 0 < scale <= 1 (1, the default: the law's drag; less: a dry reference)"
+            << exit(FatalIOError);
     }
     const ::granair::Dictionary law = granairTwoFluid::toGranair(dict, "law");
     try
@@ -46,7 +54,12 @@ Foam::dragModels::granairDrag::granairDrag
         granairTwoFluid::fatalFromGranair(dict, e.what());
     }
     Info<< "granair drag for " << pair.name() << ": coupling-library law "
-        << law_->name().c_str() << endl;
+        << law_->name().c_str();
+    if (scale_ != 1)
+    {
+        Info<< " times " << scale_;
+    }
+    Info<< endl;
 }
 
 
@@ -87,7 +100,7 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::granairDrag::K() const
         ::granair::FluidProperties fluid;
         fluid.rho = rho;
         fluid.mu = mu;
-        return ::granair::bedMomentumExchange(*law_, di, eps, slip, fluid);
+        return scale_*::granair::bedMomentumExchange(*law_, di, eps, slip, fluid);
     };
     try
     {

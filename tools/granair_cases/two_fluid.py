@@ -30,13 +30,15 @@ from . import CaseError, chunks, foam, runner, series as _series, template
 
 # the patches the powder leaves through, their flows summed (positive outwards)
 OUT_PATCHES = ("outlet", "freefall")
-# A dry run keeps the air (the solver has two phases) at this share of its
-# viscosity, so Ergun's viscous term is 1/100 of the real one (the inertial term
-# stays: the wedge silo's dry slot dp/dz is 1/9 to 1/13 of its air runs',
-# measured); its density stays (a lighter air, 1/100 or 1/10 of it, stopped in
-# the start-up with a negative air temperature from the energy equation the
-# solver always solves, measured).
+# A dry run keeps the air (the solver has two phases) but all but uncouples it,
+# in one of two ways: its viscosity times DRY_MU_FACTOR (the wedge silo's runs:
+# Ergun's viscous term 1/100 of the real one, the inertial term kept; its dry
+# slot dp/dz is 1/9 to 1/13 of its air runs', measured) or the drag times
+# DRY_DRAG_SCALE (granair drag's `scale`: both terms). Its density stays (a
+# lighter air, 1/100 or 1/10 of it, stopped in the start-up with a negative air
+# temperature from the energy equation the solver always solves, measured).
 DRY_MU_FACTOR = 0.01
+DRY_DRAG_SCALE = 0.01
 
 
 def closure(phi_fill):
@@ -48,7 +50,7 @@ def closure(phi_fill):
     powder left its slot as a dense plug and the air hardly slowed it,
     docs/two-fluid-model.md "On a silo")."""
     return dict(ALPHA_MIN_FRICTION=phi_fill - 0.01, ALPHA_MAX=phi_fill + 0.04, FR=0.05, FR_ETA=2, FR_P=5,
-                ALPHA_DELTA_MIN=0.005, SHEAR_PRESSURE="on", FACE_MOMENTUM="no", N_OUTER=1)
+                ALPHA_DELTA_MIN=0.005, SHEAR_PRESSURE="on", FACE_MOMENTUM="no", N_OUTER=1, DRAG_SCALE=1)
 
 
 def block_means(t, dt, columns, block):
@@ -136,9 +138,10 @@ def series(run, probe_dz, probes, label="two-fluid"):
     flows = {patch: (lambda d: d[d[:, 0] >= pr[0, 0] * (1 - 1e-9)])(
                  read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2))
              for patch in OUT_PATCHES}
-    t = flows["outlet"][:, 0]
-    w = flows["outlet"][:, 1] + flows["freefall"][:, 1]      # boundary fluxes are positive outwards
-    n = min(len(t), len(pr), len(flows["freefall"]), len(row))
+    # as far as every file is written (a run still going has rows in some files only)
+    n = min(len(pr), len(row), *(len(f) for f in flows.values()))
+    t = flows["outlet"][:n, 0]
+    w = flows["outlet"][:n, 1] + flows["freefall"][:n, 1]      # boundary fluxes are positive outwards
     same = np.isclose(t[:n], pr[:n, 0], rtol=1e-6) & np.isclose(t[:n], row[:n, 0], rtol=1e-6)
     if not same[:max(1, n // 2)].all():
         raise CaseError(f"{run}/postProcessing: the flow and probe files are not on the same time steps")
