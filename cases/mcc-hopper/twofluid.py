@@ -176,9 +176,9 @@ def post(run, out, name, v, a, rec):
                           ("fill_z_m", v["FILL"]), ("cells", cells), ("cpu_s", rec["cpu_s"]), ("wall_s", wall)])
     air = bool(v["AIR"])
     gc.levels.write(os.path.join(out, "level.json"), case="mcc-hopper", level="two-fluid",
-                    model=(f"two-fluid twoPhaseEulerFoam + granair muI (Remmelgas et al. mu(I)) and ErgunGidaspow, "
-                           f"Coulomb walls (mu_w {P.WALL_FRICTION:g}), staircase wedge R_o/{v['N']}, "
-                           + ("air" if air else DRY[a.dry])),
+                    # what tells the runs apart first (the compare plot's legend cuts long names)
+                    model=(("with air" if air else DRY[a.dry]) + f", staircase wedge R_o/{v['N']}: twoPhaseEulerFoam + "
+                           f"granair muI (Remmelgas et al. mu(I)), ErgunGidaspow, Coulomb walls (mu_w {P.WALL_FRICTION:g})"),
                     b_mm=P.D_OUTLET * 1e3, air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
                     outlet_dpdz_Pa_m=G if air else None, wall_time_s=wall, cores=1, timeseries="timeseries.csv")
     print(f"mcc-hopper two-fluid {name}: W = {W:.4g} kg/s, outlet dp/dz {G:.4g} Pa/m, orifice row alpha {A:.3f} "
