@@ -132,7 +132,7 @@ def report(a, runs, load, counts):
         f"Written by `bench/wedge/run.py --size {a.size} --b {a.b} --np {a.np} --t-end {a.t_end:g} --repeat {a.repeat}` "
         "(see its docstring and bench/README.md): one settled fill, then the first "
         f"{a.t_end:g} s of the discharge in each configuration, the fastest of {a.repeat} repeat(s) shown (slowest in "
-        "brackets). `forces-off` is the air run with `forces {{ applied off; }}`: every part of the coupling computed "
+        "brackets). `forces-off` is the air run with `forces { applied off; }`: every part of the coupling computed "
         "and zeros stored, so its DEM runs exactly the DEM-only problem.",
         "",
         f"Machine: {load}",
@@ -163,7 +163,7 @@ def report(a, runs, load, counts):
                              f"by CPU time; DEM time per particle-step {ratio(c, 'dem_s') / ratio(c, 'particle_steps'):.3f}x DEM-only's")
     if counts:
         z = {c: r["contacts_per_particle"] for c, r in counts.items()}
-        lines.append(f"- contacts per particle (untimed runs, the mean over every coupling step): "
+        lines.append("- contacts per particle (untimed runs, the mean over every coupling step): "
                      + ", ".join(f"{c} {v:.3f}" for c, v in z.items())
                      + (f"; air / noair {z['air'] / z['noair']:.3f}" if len(z) == 2 else ""))
     for c in ("air", "forces-off"):

@@ -124,16 +124,8 @@ boundary
 );
 """
     gc.template.write(os.path.join(run, "system", "blockMeshDict"), text)
-    boxes = []
-    for k, m in enumerate(lay["kept"]):
-        if m < lay["ns"]:
-            lo = P.R_OUT + m * lay["dr2"] + 1e-9
-            boxes.append(f"        {{ action subtract; type cellSet; name silo; source boxToCell; "
-                         f"box ({lo:.9g} -1 {k * dz + 1e-9:.9g}) (1 1 {(k + 1) * dz - 1e-9:.9g}); }}")
-    topo = ("FoamFile { version 2.0; format ascii; class dictionary; object topoSetDict; }\nactions\n(\n"
-            "        { action new; type cellSet; name silo; source boxToCell; box (-1 -1 -1) (1 1 1); }\n"
-            + "\n".join(boxes) + "\n);\n")
-    gc.template.write(os.path.join(run, "system", "topoSetDict"), topo)
+    gc.two_fluid.silo_cells(run, [(P.R_OUT + m * lay["dr2"] + 1e-9, k * dz + 1e-9, 1, (k + 1) * dz - 1e-9)
+                                  for k, m in enumerate(lay["kept"]) if m < lay["ns"]])
 
 
 def numbers(a, air):
@@ -190,15 +182,7 @@ def run_one(a, air):
     name = "air" if air else "noair"
     run = os.path.join(a.out, "runs", name)
     v, lay = numbers(a, air)
-    keep = {k: x for k, x in v.items() if k != "END"}      # a resumed run may go further
-    values = os.path.join(run, "values.json")
-    if a.resume and os.path.exists(values):
-        gc.template.check_values(values, keep, "rerun without --resume to start again")
-    else:
-        gc.runner.clean(run)
-        gc.template.render(T, run, v)
-        staircase(run, lay)
-        gc.template.save_values(values, keep)
+    gc.two_fluid.setup(run, T, v, lambda d: staircase(d, lay), a.resume)
     if a.setup_only:
         return None
     rec = gc.two_fluid.run(run, T, v, a.end, a.chunk, f"mcc-hopper two-fluid {name}", v["FILL_G"], until=0.9)

@@ -130,19 +130,14 @@ boundary
 """
     gc.template.write(os.path.join(run, "system", "blockMeshDict"), text)
     tan = np.tan(np.radians(P.HALF_ANGLE))
-    boxes = []
+    outside = []
     for k in range(nz):
         zc = (k + 0.5) * dx
         w = B + zc * tan
         if zc > v["HH"] or w >= W:
             break
-        for lo, hi in ((-W - 1, -w), (w, W + 1)):
-            boxes.append(f"        {{ action subtract; type cellSet; name silo; source boxToCell; "
-                         f"box ({lo:.9g} -1 {k * dx + 1e-9:.9g}) ({hi:.9g} 1 {(k + 1) * dx - 1e-9:.9g}); }}")
-    topo = ("FoamFile { version 2.0; format ascii; class dictionary; object topoSetDict; }\nactions\n(\n"
-            "        { action new; type cellSet; name silo; source boxToCell; box (-1 -1 -1) (1 1 1); }\n"
-            + "\n".join(boxes) + "\n);\n")
-    gc.template.write(os.path.join(run, "system", "topoSetDict"), topo)
+        outside += [(lo, k * dx + 1e-9, hi, (k + 1) * dx - 1e-9) for lo, hi in ((-W - 1, -w), (w, W + 1))]
+    gc.two_fluid.silo_cells(run, outside)
 
 
 def post(run, out, name, v, wall=None):
@@ -199,18 +194,9 @@ def run_one(a, b_mm, air):
     name = f"b{b_mm}_{'air' if air else 'noair'}"
     run = os.path.join(a.out, "runs", name)
     v = numbers(a, b_mm, air)
-    keep = {k: x for k, x in v.items() if k != "END"}      # a resumed run may go further
-    values = os.path.join(run, "values.json")
-    if a.resume and os.path.exists(values):
-        gc.template.check_values(values, keep, "rerun without --resume to start again")
-    else:
-        gc.runner.clean(run)
-        gc.template.render(T, run, v)
-        staircase(run, v, b_mm * 1e-3)
-        gc.template.save_values(values, keep)
+    gc.two_fluid.setup(run, T, v, lambda d: staircase(d, v, b_mm * 1e-3), a.resume)
     if a.setup_only:
         return None
-
     rec = gc.two_fluid.run(run, T, v, a.end, a.chunk, f"wedge-silo two-fluid {name}", v["FILL_G"], a.until,
                            a.past_half)
     r = post(run, os.path.join(a.out, name), name, v, wall=sum(c["wall_s"] for c in rec["chunks"]))

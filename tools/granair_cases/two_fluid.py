@@ -3,6 +3,7 @@ docs/two-fluid-model.md) on a staircase mesh, shared by cases/wedge-silo/twoflui
 and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-fluid/template
 (geometry-free but for the values a case fills in).
 
+    setup(run_dir, template, values, write_mesh, resume)        the run folder (or the one to resume)
     rec = run(run_dir, template, values, end, chunk, label)      the chunked run, resumable
     t, w, dpdz, alpha = series(run_dir, probe_dz, probes)        the run's rows, every time step
     ends, means = block_means(t, dt, [w, dpdz, alpha], block)     their means over blocks of time
@@ -162,6 +163,34 @@ def wall_seconds(run):
             clock = re.findall(r"ClockTime = ([\d.eE+-]+) s", fh.read())
         wall += float(clock[-1]) if clock else 0.0
     return wall
+
+
+def silo_cells(run_dir, outside):
+    """system/topoSetDict: the cellSet `silo` of every cell but those in the boxes
+    `outside` ((x_lo, z_lo, x_hi, z_hi): the cells of the rectangular blocks that
+    lie outside the hopper, by their centres; y spans the mesh)."""
+    boxes = "\n".join(f"        {{ action subtract; type cellSet; name silo; source boxToCell; "
+                      f"box ({x0:.9g} -1 {z0:.9g}) ({x1:.9g} 1 {z1:.9g}); }}" for x0, z0, x1, z1 in outside)
+    template.write(os.path.join(run_dir, "system", "topoSetDict"),
+                   "FoamFile { version 2.0; format ascii; class dictionary; object topoSetDict; }\nactions\n(\n"
+                   "        { action new; type cellSet; name silo; source boxToCell; box (-1 -1 -1) (1 1 1); }\n"
+                   + boxes + "\n);\n")
+
+
+def setup(run_dir, template_dir, values, write_mesh, resume=False):
+    """The run folder: the template rendered with the values (kept in values.json
+    but END: a resumed run may go further) and the case's mesh dictionaries
+    (write_mesh(run_dir)). resume: a folder set up with the same values is kept
+    as it is (different values stop, naming them)."""
+    keep = {k: x for k, x in values.items() if k != "END"}
+    path = os.path.join(run_dir, "values.json")
+    if resume and os.path.exists(path):
+        template.check_values(path, keep, "rerun without --resume to start again")
+        return
+    runner.clean(run_dir)
+    template.render(template_dir, run_dir, values)
+    write_mesh(run_dir)
+    template.save_values(path, keep)
 
 
 def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, past_half=False):
