@@ -52,7 +52,7 @@ BLOCK = 0.01      # [s] timeseries.csv's block means (the continuum's mass_flow.
 # the full hopper is this many wedges (the wedge's faces at +-r tan(a): exact)
 WEDGES = math.pi / math.tan(P.WEDGE_HALF_ANGLE)
 PHI = P.RHO_BULK / P.RHO_P    # the fill's solid fraction
-DRY = {"drag": "dry: drag x 1/100", "viscosity": "dry: air viscosity x 1/100"}
+DRY = gc.two_fluid.DRY
 
 
 def layout(n):
@@ -135,11 +135,11 @@ def numbers(a, air):
     with open(block) as fh:
         rheology = gc.template.fill(fh.read(), dict(ETA_MAX=P.ETA_MAX), block)
     dz = lay["dz"]
+    mu_factor, drag_scale = gc.two_fluid.dry(air, a.dry)
     v = dict(gc.two_fluid.closure(PHI), N=a.mesh, AIR=int(air), END=a.end, WRITE_INTERVAL=a.chunk,
              TITLE=f"The MCC hopper (cases/mcc-hopper/twofluid.py), {'with air' if air else 'dry'}",
              D=P.D_PARTICLE, D_DRAG=P.D_PARTICLE, RHO_P=P.RHO_P, G=P.G, RHO_F=P.AIR_RHO,
-             MU=P.AIR_MU * (gc.two_fluid.DRY_MU_FACTOR if not air and a.dry == "viscosity" else 1.0),
-             DRAG_SCALE=gc.two_fluid.DRY_DRAG_SCALE if not air and a.dry == "drag" else 1,
+             MU=P.AIR_MU * mu_factor, DRAG_SCALE=drag_scale,
              AIR_EOS="rhoConst",
              DRAG_LAW="ErgunGidaspow", PHI_FILL=PHI, FILL=fill_z, FILL_G=fill_g, WALL_FRICTION=P.WALL_FRICTION,
              RHEOLOGY=rheology, PROBE_Z=dz / 2,

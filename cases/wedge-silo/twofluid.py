@@ -12,16 +12,21 @@ One slot width.
 
     twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--chunk T] [--resume] [--past-half] [--mesh N]
                 [--until F] [--fills demo|study]
+                [--dry viscosity|drag] [--outer-until T] [--rheology-from literature|calibration]
+                [--dem-size demo|study]
                 [--air-mu-factor F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
                 [--out DIR] [--setup-only]
 
 The silo, its fill and the mu(I) block are the continuum level's
 (continuum.py numbers(): the same mesh with its free-fall region, the DEM
 demo's fill height and bulk density, the literature mu(I)); the two-fluid
-dictionaries are two-fluid/template/. Without air the air is kept (the
-solver has two phases) at 1/100 of its viscosity, so Ergun's viscous term
-is 1/100 of the real one (the inertial term stays: the dry runs' slot dp/dz
-is 1/9 to 1/13 of the air runs', measured); its density stays (a
+dictionaries are two-fluid/template/; --rheology-from calibration takes the
+continuum's DEM-calibrated block instead (and its bulk density). Without air
+the air is kept (the solver has two phases) at 1/100 of its viscosity, so
+Ergun's viscous term is 1/100 of the real one (the inertial term stays: the
+dry runs' slot dp/dz is 1/9 to 1/13 of the air runs', measured), or with
+--dry drag at its real viscosity and the drag times 1/100 (both terms, as
+the MCC hopper's dry runs); its density stays (a
 lighter air, 1/100 or 1/10 of it, stopped in the start-up with a negative
 air temperature from the energy equation the solver always solves, measured).
 A run goes in chunks of --chunk s (log/chunks.json records each one's CPU
@@ -55,12 +60,17 @@ def numbers(a, b_mm, air):
     # fall), so an option it gains has its default here too
     c = continuum.parser().parse_args([])
     c.mesh, c.end, c.write_every, c.fills = a.mesh, a.end, a.chunk, a.fills
+    # --rheology-from calibration: the continuum's DEM-calibrated mu(I) block, its
+    # d the --dem-size run's parcels, the bulk density the calibrated packing
+    c.rheology_from, c.dem_size = a.rheology_from, a.dem_size
     v = continuum.numbers(c, b_mm, air)
     phi = v["RHO_B"] / P.RHO_P
     dx = b_mm * 1e-3 / a.mesh
     v.update(gc.two_fluid.closure(phi))
-    mu_factor = a.air_mu_factor if air else gc.two_fluid.DRY_MU_FACTOR
-    v.update(D=P.D_LACTOSE, D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81,
+    mu_factor, drag_scale = gc.two_fluid.dry(air, a.dry)
+    if air:
+        mu_factor = a.air_mu_factor
+    v.update(D=P.D_LACTOSE, D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81, DRAG_SCALE=drag_scale, DRY=a.dry,
              RHO_F=P.AIR_RHO, MU=P.AIR_MU * mu_factor, AIR_EOS="rhoConst",
              DRAG_LAW="ErgunGidaspow", PHI_FILL=phi, SHEAR_PRESSURE=a.shear_pressure,
              # the dp/dz probes at the cell centres beside the slot plane: a probe
@@ -171,12 +181,15 @@ def post(run, out, name, v, wall=None):
     if wall is None:    # from the solver logs (start-up and main run)
         wall = gc.two_fluid.wall_seconds(run)
     gc.levels.write(os.path.join(out, "level.json"), case="wedge-silo", level="two-fluid",
-                    model=(f"two-fluid twoPhaseEulerFoam + granair muI (mu_s {v['MU_S']:.3f}) and ErgunGidaspow, "
+                    model=(f"two-fluid twoPhaseEulerFoam + granair "
+                           f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}muI "
+                           f"(mu_s {v['MU_S']:.3f}) and ErgunGidaspow, "
                            f"Coulomb walls, staircase mesh b/{v['N']}, "
                            + (f"shear-induced pressure (phiMax {v['PHI_MAX']:.4g}), " if v["SHEAR_PRESSURE"] == "on"
                               else "contact pressure only, ")
                            + (("air" if v["AIR_MU_FACTOR"] == 1 else f"air at {v['AIR_MU_FACTOR']:g}x viscosity (diagnostic)")
-                              if air else "air at 1/100 viscosity (dry)")),
+                              if air else {"viscosity": "air at 1/100 viscosity (dry)",
+                                           "drag": "drag x 1/100 (dry)"}[v["DRY"]])),
                     b_mm=v["B_MM"], air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
                     outlet_dpdz_Pa_m=G if air else None, wall_time_s=wall, cores=1, timeseries="timeseries.csv")
     print(f"wedge-silo two-fluid {name}: W = {W:.4g} kg/s, outlet dp/dz {G:.4g} Pa/m, slot row alpha {A:.3f} "
@@ -198,7 +211,7 @@ def run_one(a, b_mm, air):
     if a.setup_only:
         return None
     rec = gc.two_fluid.run(run, T, v, a.end, a.chunk, f"wedge-silo two-fluid {name}", v["FILL_G"], a.until,
-                           a.past_half)
+                           a.past_half, outer=(a.outer_until, 3) if a.outer_until > 0 else None)
     r = post(run, os.path.join(a.out, name), name, v, wall=sum(c["wall_s"] for c in rec["chunks"]))
     r["cpu_s"] = rec["cpu_s"]
     gc.series.write_keys(os.path.join(a.out, name, "cost.txt"),
@@ -237,11 +250,30 @@ def main():
                     help="p_I's solid fraction at I = 0 (its denominator max(PHI - alpha, delta)), phiMin "
                          "moved with it; alphaMax: the contact pressure's alphaMax (fill + 0.04) "
                          "(default: the rheology's phiMax, the fill's packing)")
+    # default viscosity: the committed references' dry runs; on the finer meshes
+    # (b/6 at b = 10 mm, b/10 at b = 15 mm) those stopped at t ~ 0.11 s (README)
+    ap.add_argument("--dry", choices=sorted(gc.two_fluid.DRY), default="viscosity",
+                    help="how a dry run uncouples the air: its viscosity (default) or its drag (granair drag's "
+                         "scale) times 1/100")
+    # measured: the dry b = 10 mm run on b/6 cells stopped at t = 0.094 s (drag
+    # x 1/100) or 0.108 s (viscosity x 1/100): the bed's top rows bounced (+3.9
+    # then -4.2 m/s at solid fraction 0.6) and the air's energy equation gave a
+    # negative temperature; with three outer correctors it passed 0.12 s
+    ap.add_argument("--outer-until", type=float, default=0.0, metavar="T",
+                    help="three outer correctors per step until T s, then the template's one (default 0: one "
+                         "throughout); for the start's transient on fine meshes without air")
+    ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
+                    help="the mu(I) block: the literature's (default) or the DEM calibration of the DEM's parcels "
+                         "(continuum.py --rheology-from, with its bulk density)")
+    ap.add_argument("--dem-size", choices=sorted(P.SIZES), default="demo",
+                    help="with the calibration: the DEM run whose parcel d goes in I (default demo; continuum.py)")
     ap.add_argument("--air-mu-factor", type=float, default=1.0,
                     help="diagnostic: the air run's air viscosity in units of the real one (default 1)")
     a = gc.cli.parse(ap, os.path.join(HERE, "two-fluid-results"))
     if not (a.chunk > 0 and a.end > 0):
         ap.error(f"--chunk {a.chunk:g} / --end {a.end:g}: expected times > 0 [s]")
+    if not a.outer_until >= 0:
+        ap.error(f"--outer-until {a.outer_until:g}: expected a time >= 0 [s]")
     if not 0 < a.until <= 1:
         ap.error(f"--until {a.until:g}: expected a share of the fill in (0, 1]")
     if a.shear_pressure_phi_max not in (None, "alphaMax"):

@@ -40,6 +40,18 @@ OUT_PATCHES = ("outlet", "freefall")
 # temperature from the energy equation the solver always solves, measured).
 DRY_MU_FACTOR = 0.01
 DRY_DRAG_SCALE = 0.01
+# the two ways by name (the cases' --dry), with the words their level texts use
+DRY = {"drag": "dry: drag x 1/100", "viscosity": "dry: air viscosity x 1/100"}
+
+
+def dry(air, how):
+    """(air viscosity factor, drag scale) of a run: (1, 1) with air, else those of
+    the dry way `how` (a key of DRY)."""
+    if air:
+        return 1.0, 1
+    if how not in DRY:
+        raise CaseError(f"dry run: '{how}' is not one of {sorted(DRY)}")
+    return (DRY_MU_FACTOR, 1) if how == "viscosity" else (1.0, DRY_DRAG_SCALE)
 
 
 def closure(phi_fill):
@@ -193,13 +205,16 @@ def setup(run_dir, template_dir, values, write_mesh, resume=False):
     template.save_values(path, keep)
 
 
-def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, past_half=False):
+def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, past_half=False, outer=None):
     """The chunked run (gc.chunks.loop, record log/chunks.json): the mesh and the
     start-up, then twoPhaseEulerFoam from its newest time to the next chunk end,
     until `end` or until the share `until` of the fill has left (a chunk is
     stopped there with writeNow; past_half: on to `end` all the same). The case
-    has rendered the template and written its blockMeshDict and topoSetDict."""
+    has rendered the template and written its blockMeshDict and topoSetDict.
+    outer = (T, n): n outer correctors per step before t = T (a chunk ends at
+    T), the template's N_OUTER after; each chunk records its number."""
     control = os.path.join(run_dir, "system", "controlDict")
+    solution = os.path.join(run_dir, "system", "fvSolution")
 
     def step(rec):
         if not rec["chunks"]:
@@ -236,13 +251,18 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
         if t0 >= end - 1e-9:
             return f"t_end = {end:g} s"
         t1 = min(end, (np.floor(t0 / chunk + 1e-6) + 1) * chunk)
+        n_outer = values["N_OUTER"]
+        if outer and t0 < outer[0] - 1e-9:
+            t1, n_outer = min(t1, outer[0]), outer[1]
+        foam.set_entry(solution, "nOuterCorrectors", n_outer)
         foam.set_entry(control, "stopAt", "endTime")
         foam.set_entry(control, "endTime", f"{t1:.10g}")
         # OpenFOAM counts write times from the start time and does not write at
         # endTime: one interval from t0 to t1 makes t1 a write time (a run
         # stopped at half the fill out starts off the chunk grid)
         foam.set_entry(control, "writeInterval", f"{t1 - t0:.10g}")
-        print(f"{label}: {t0:g} -> {t1:g} s", flush=True)
+        print(f"{label}: {t0:g} -> {t1:g} s" + (f" ({n_outer} outer correctors)" if n_outer != values["N_OUTER"] else ""),
+              flush=True)
         cpu = runner.run(["twoPhaseEulerFoam"], run_dir, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
                          stop_when=None if past_half else lambda: out_by(run_dir, fill_g, until) is not None,
                          poll=20.0)
@@ -250,7 +270,7 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
         if got < t1 - 1e-9 and (half is None or past_half):
             raise CaseError(f"{run_dir}: twoPhaseEulerFoam ended without writing t = {t1:g} s (newest: {got:g} s); "
                             f"see log/twoPhaseEulerFoam_{t0:g}-{t1:g}.log")
-        return {"from": t0, "to": got, "cpu_s": cpu, "until_s": half}
+        return {"from": t0, "to": got, "cpu_s": cpu, "until_s": half, "n_outer": n_outer}
 
     rec = chunks.loop(run_dir, step)
     print(f"{label}: {rec['reason']}", flush=True)

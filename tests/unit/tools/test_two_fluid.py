@@ -73,6 +73,18 @@ check("block means", m, [3.0, 8.0])
 c = two_fluid.closure(0.6)
 check("closure: contact pressure zero 0.01 below the fill", c["ALPHA_MIN_FRICTION"], 0.59)
 check("closure: alphaMax 0.04 above it", c["ALPHA_MAX"], 0.64)
+check("closure: full drag", c["DRAG_SCALE"], 1)
+
+# a dry run's (air viscosity factor, drag scale): one of the two made small, with air neither
+check("dry: with air", two_fluid.dry(True, "drag"), (1.0, 1))
+check("dry: drag x 1/100", two_fluid.dry(False, "drag"), (1.0, two_fluid.DRY_DRAG_SCALE))
+check("dry: viscosity x 1/100", two_fluid.dry(False, "viscosity"), (two_fluid.DRY_MU_FACTOR, 1))
+try:
+    two_fluid.dry(False, "density")
+    failures.append("dry: an unknown way should stop with a CaseError")
+except two_fluid.CaseError as e:
+    if "density" not in str(e):
+        failures.append(f"dry: the message should name the way, got: {e}")
 
 if failures:
     print("\n".join(failures))
