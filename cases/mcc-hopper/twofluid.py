@@ -5,7 +5,8 @@ mu(I) of Remmelgas et al. 2019, rheology/muI), granair drag (ErgunGidaspow on
 the 660 um spheres) and Coulomb walls (mu_w of parameters.py), with air and dry,
 on an axisymmetric staircase wedge.
 
-    twofluid.py [--air on|off|both] [--dry drag|viscosity] [--mesh N] [--end T] [--chunk T]
+    twofluid.py [--air on|off|both] [--dry drag|viscosity] [--rheology-from literature|calibration]
+                [--mesh N] [--end T] [--chunk T]
                 [--steady-from T] [--resume] [--out DIR] [--setup-only]
 
 Dry: the solver has two phases, so the air stays, all but uncoupled: by
@@ -71,13 +72,13 @@ def layout(n):
     return dict(dz=dz, ns=ns, dr2=dr2, nf=nf, nz=nz, kept=kept)
 
 
-def fill(lay):
-    """The fill: the row boundary whose powder below it (solid fraction PHI) is nearest
+def fill(lay, phi=PHI):
+    """The fill: the row boundary whose powder below it (solid fraction phi) is nearest
     the fill mass, and that mass [g] (full hopper)."""
     best, mass = (0.0, 0.0), 0.0
     for k, m in enumerate(lay["kept"]):
         r_outer = P.R_OUT + m * lay["dr2"]
-        mass += P.RHO_P * PHI * math.pi * r_outer ** 2 * lay["dz"]
+        mass += P.RHO_P * phi * math.pi * r_outer ** 2 * lay["dz"]
         if abs(mass - P.FILL_MASS) < abs(best[1] - P.FILL_MASS):
             best = ((k + 1) * lay["dz"], mass)
     return best[0], best[1] * 1e3
@@ -130,18 +131,25 @@ boundary
 
 def numbers(a, air):
     lay = layout(a.mesh)
-    fill_z, fill_g = fill(lay)
     block = os.path.join(HERE, "rheology", "muI")
     with open(block) as fh:
         rheology = gc.template.fill(fh.read(), dict(ETA_MAX=P.ETA_MAX), block)
+    phi = PHI
+    if a.rheology_from == "calibration":
+        # the DEM calibration's mu(I) and phi(I) at the primary 660 um in I (as the
+        # continuum's results/calibrated/d660um), filled at its phi_max
+        f = gc.calibration.fit(P.CALIBRATION)
+        rheology = gc.calibration.block(rheology, P.CALIBRATION, d=P.D_PARTICLE, where=block)
+        phi = f["rho_p"] * f["phi_max"] / P.RHO_P
+    fill_z, fill_g = fill(lay, phi)
     dz = lay["dz"]
     mu_factor, drag_scale = gc.two_fluid.dry(air, a.dry)
-    v = dict(gc.two_fluid.closure(PHI), N=a.mesh, AIR=int(air), END=a.end, WRITE_INTERVAL=a.chunk,
+    v = dict(gc.two_fluid.closure(phi), N=a.mesh, RHEOLOGY_FROM=a.rheology_from, AIR=int(air), END=a.end, WRITE_INTERVAL=a.chunk,
              TITLE=f"The MCC hopper (cases/mcc-hopper/twofluid.py), {'with air' if air else 'dry'}",
              D=P.D_PARTICLE, D_DRAG=P.D_PARTICLE, RHO_P=P.RHO_P, G=P.G, RHO_F=P.AIR_RHO,
              MU=P.AIR_MU * mu_factor, DRAG_SCALE=drag_scale,
              AIR_EOS="rhoConst",
-             DRAG_LAW="ErgunGidaspow", PHI_FILL=PHI, FILL=fill_z, FILL_G=fill_g, WALL_FRICTION=P.WALL_FRICTION,
+             DRAG_LAW="ErgunGidaspow", PHI_FILL=phi, FILL=fill_z, FILL_G=fill_g, WALL_FRICTION=P.WALL_FRICTION,
              RHEOLOGY=rheology, PROBE_Z=dz / 2,
              ORIFICE_PROBES=f"({dz / 2:.9g} 0 {dz / 2:.9g}) ({dz / 2:.9g} 0 {-dz / 2:.9g})",
              SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dz:.9g} 0 {dz / 2:.9g})" for i in range(a.mesh)))
@@ -170,7 +178,9 @@ def post(run, out, name, v, a, rec):
     gc.levels.write(os.path.join(out, "level.json"), case="mcc-hopper", level="two-fluid",
                     # what tells the runs apart first (the compare plot's legend cuts long names)
                     model=(("with air" if air else DRY[a.dry]) + f", staircase wedge R_o/{v['N']}: twoPhaseEulerFoam + "
-                           f"granair muI (Remmelgas et al. mu(I)), ErgunGidaspow, Coulomb walls (mu_w {P.WALL_FRICTION:g})"),
+                           "granair muI (" + ("DEM-calibrated mu(I), d 660 um in I" if v["RHEOLOGY_FROM"] == "calibration"
+                                              else "Remmelgas et al. mu(I)")
+                           + f"), ErgunGidaspow, Coulomb walls (mu_w {P.WALL_FRICTION:g})"),
                     b_mm=P.D_OUTLET * 1e3, air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
                     outlet_dpdz_Pa_m=G if air else None, wall_time_s=wall, cores=1, timeseries="timeseries.csv")
     print(f"mcc-hopper two-fluid {name}: W = {W:.4g} kg/s, outlet dp/dz {G:.4g} Pa/m, orifice row alpha {A:.3f} "
@@ -202,7 +212,12 @@ def compare(a, res):
             ("continuum mu(I), with air (reference-continuum-air)", *reference("reference-continuum-air")),
             ("continuum mu(I), dry (results)", reference("results")[0], None),
             ("coarse-grained DEM s = 5, dry (reference-cg-dem)", reference("reference-cg-dem")[0], None)]
-    lines = [f"# MCC hopper, two-fluid level against the others (twofluid.py --mesh {a.mesh})", "",
+    if a.rheology_from == "calibration":
+        rows.append(("continuum DEM-calibrated mu(I), d 660 um in I, dry (results/calibrated/d660um)",
+                     float(gc.series.read_keys(os.path.join(HERE, "results", "calibrated", "d660um", "summary.txt"))
+                           ["steady_mass_flow_kg_s"]), None))
+    lines = [f"# MCC hopper, two-fluid level against the others (twofluid.py --mesh {a.mesh}"
+             f"{' --rheology-from calibration' if a.rheology_from == 'calibration' else ''})", "",
              "| run | W [kg/s] | outlet dp/dz [Pa/m] |", "|---|---:|---:|"]
     lines += [f"| {r} | {w:.4g} | {'' if g is None else f'{g:.4g}'} |" for r, w, g in rows]
     effect = {"two-fluid": rows[0][1] / rows[1][1] - 1, "continuum": rows[2][1] / rows[3][1] - 1}
@@ -219,6 +234,9 @@ def main():
     ap.add_argument("--air", choices=["on", "off", "both"], default="both")
     ap.add_argument("--dry", choices=sorted(DRY), default="drag",
                     help="how the dry run uncouples the air: its drag or its viscosity times 1/100 (default drag)")
+    ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
+                    help="the mu(I) block: Remmelgas et al.'s (default) or the DEM calibration of the cg-DEM's "
+                         "parcels at the primary d = 660 um in I, filled at its phi_max (study.py --rheology-from)")
     ap.add_argument("--mesh", type=int, default=5, help="cells across the orifice radius (default 5: 2.5 mm)")
     ap.add_argument("--end", type=float, default=2.0, help="simulated time [s] (default 2, the continuum's)")
     ap.add_argument("--chunk", type=float, default=0.25,
