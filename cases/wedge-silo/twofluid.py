@@ -70,9 +70,10 @@ def numbers(a, b_mm, air):
     mu_factor, drag_scale = gc.two_fluid.dry(air, a.dry)
     if air:
         mu_factor = a.air_mu_factor
-    # the phase's diameter is the rheology block's d (muI checks it: the DEM's
-    # parcels with the calibration); the drag sees the primary particles
-    v.update(D=v["D_LACTOSE"], D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81, DRAG_SCALE=drag_scale, DRY=a.dry,
+    # the phase's diameter is the rheology block's d as written there (muI
+    # checks it: the DEM's parcels with the calibration); the drag sees the
+    # primary particles
+    v.update(D=gc.calibration.entry(v["RHEOLOGY"], "d"), D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81, DRAG_SCALE=drag_scale, DRY=a.dry,
              RHO_F=P.AIR_RHO, MU=P.AIR_MU * mu_factor, AIR_EOS="rhoConst",
              DRAG_LAW="ErgunGidaspow", PHI_FILL=phi, SHEAR_PRESSURE=a.shear_pressure,
              # the dp/dz probes at the cell centres beside the slot plane: a probe
