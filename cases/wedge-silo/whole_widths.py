@@ -31,6 +31,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 RES = os.path.join(HERE, "reference-study-whole")
 CONTINUUM = os.path.join(HERE, "reference-continuum-study-whole")
 TWO_FLUID = os.path.join(HERE, "reference-two-fluid-study-whole")
+TWO_FLUID_CAL = os.path.join(HERE, "reference-two-fluid-calibrated")
 COLOURS = {5: "tab:blue", 10: "tab:orange", 15: "tab:green"}
 
 
@@ -246,7 +247,8 @@ def main():
         raise gc.CaseError(f"{RES}: no b<b>_<air|noair>.csv (run study.py --size study --whole --stage post first)")
     rows, cont, tf = band_rows(by), continuum_runs(), continuum_runs(TWO_FLUID)
     levels = [("Continuum mu(I) (reference-continuum-study-whole/)", cont),
-              ("Two-fluid (reference-two-fluid-study-whole/)", tf)]
+              ("Two-fluid (reference-two-fluid-study-whole/)", tf),
+              ("Two-fluid, DEM-calibrated mu(I) (reference-two-fluid-calibrated/)", continuum_runs(TWO_FLUID_CAL))]
     gc.series.write_rows(os.path.join(RES, "whole_bands.csv"), rows, fmt="{:.6g}")
     lines = markdown(by, rows, levels)
     lb, more = level_bands(rows, levels)
