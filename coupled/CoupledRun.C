@@ -317,7 +317,7 @@ void CoupledRun::mapParticles()
 {
     {
         StageTimers::Scope s(timers_, StageTimers::Exchange);
-        exchange_->forward(particles_, owned_);
+        exchange_->forward(*particles_, owned_);
     }
     countSearch();
     StageTimers::Scope s(timers_, StageTimers::Mapping);
@@ -354,7 +354,7 @@ void CoupledRun::mapVoidFraction()
         StageTimers::Scope s(timers_, StageTimers::Exchange);
         // Particles that left the mesh (below a DEM-only run's coarse mesh)
         // are simply not in the field: the DEM alone decides where they go.
-        exchange_->forward(particles_, owned_, ::granair::ParticleExchange::Outside::skip);
+        exchange_->forward(*particles_, owned_, ::granair::ParticleExchange::Outside::skip);
     }
     countSearch();
     StageTimers::Scope s(timers_, StageTimers::Mapping);
@@ -456,7 +456,7 @@ void CoupledRun::run()
     double massFlow = 0;
     {
         StageTimers::Scope s(timers_, StageTimers::DEM);
-        dem_->getParticles(particles_);
+        particles_ = &dem_->particles();
     }
     // The void fraction at the start time is that of the particles there
     // (not 0/voidfraction or its default 1): it becomes the old-time value
@@ -501,7 +501,7 @@ void CoupledRun::run()
             {
                 discharge_->update();
             }
-            dem_->getParticles(particles_);
+            particles_ = &dem_->particles();
         }
         ++runTime_;
         if (air_)
@@ -658,7 +658,7 @@ void CoupledRun::writeParticles(label k)
     {
         dem_->getFluidForces(forces);
     }
-    particleVtk_->write(t, particles_, forces.empty() ? nullptr : forces.data(), particles_.size());
+    particleVtk_->write(t, *particles_, forces.empty() ? nullptr : forces.data(), particles_->size());
     vtkNext_ = label(std::floor((t - vtkOrigin_ + tol)/run_.vtkInterval)) + 1;
 }
 
@@ -713,7 +713,7 @@ std::string CoupledRun::progressExtra(const ::granair::StepRecord& r) const
     ::granair::ResourceUsage::Buffers b;
     b.run = double
     (
-        capacityBytes(particles_) + owned_.bufferBytes()
+        owned_.bufferBytes()
     );
     b.exchange = double(exchange_->bufferBytes());
     b.stepParticles = double(step_->particleBufferBytes());

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 #include <system_error>
 #include <unordered_map>
@@ -300,32 +301,52 @@ void LiggghtsDriver::advance(int nSteps) {
     needsSetup_ = false;
 }
 
-void LiggghtsDriver::getParticles(std::vector<ParticleState>& out) {
+const ParticleList& LiggghtsDriver::particles() {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     requireSpheres(atom);
     const int nlocal = atom.nlocal;
     // Grown by an eighth, not doubled, when this rank's particles grow (they
     // move between ranks): the memory report counts capacities (CapacityBytes.hpp).
-    reserveGrowing(out, static_cast<std::size_t>(nlocal));
     reserveGrowing(lastTags_, static_cast<std::size_t>(nlocal));
-    out.resize(nlocal);
-    lastTags_.resize(nlocal);
+    lastTags_.assign(atom.tag, atom.tag + nlocal);
+    const LAMMPS_NS::Domain& domain = *lmp_->domain;
+    local_.lmp_ = lmp_;
+    local_.n_ = static_cast<std::size_t>(nlocal);
+    local_.periodic_ = domain.xperiodic || domain.yperiodic || domain.zperiodic;
+    local_.triclinic_ = domain.triclinic != 0;
+    const int periodic[3] = {domain.xperiodic, domain.yperiodic, domain.zperiodic};
+    for (int d = 0; d < 3; ++d) {
+        local_.lo_[d] = periodic[d] ? domain.boxlo[d] : -std::numeric_limits<double>::infinity();
+        local_.hi_[d] = periodic[d] ? domain.boxhi[d] : std::numeric_limits<double>::infinity();
+    }
+    return local_;
+}
+
+ParticleState LiggghtsDriver::LocalParticles::operator[](std::size_t i) const {
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    ParticleState p;
+    p.id = atom.tag[i];
+    double x[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
     // In a periodic box LIGGGHTS wraps a particle that crossed a periodic
     // face only at the next re-neighbouring, so in between its centre may lie
     // up to half the skin outside the box (and outside the CFD mesh, which
     // covers the box). Report the wrapped position, as LIGGGHTS will hold it.
-    LAMMPS_NS::Domain& domain = *lmp_->domain;
-    const bool periodic = domain.xperiodic || domain.yperiodic || domain.zperiodic;
-    for (int i = 0; i < nlocal; ++i) {
-        ParticleState& p = out[i];
-        p.id = atom.tag[i];
-        double x[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
-        if (periodic) domain.remap(x);
-        p.x = Vec3(x[0], x[1], x[2]);
-        p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
-        p.radius = atom.radius[i];
-        lastTags_[i] = atom.tag[i];
-    }
+    // Domain::remap leaves an orthogonal box's inside point as it is (its
+    // loops do not run, max(x, lo) = x): only the few outside call it.
+    if (periodic_ && (triclinic_ || !(x[0] >= lo_[0] && x[0] < hi_[0] && x[1] >= lo_[1] && x[1] < hi_[1] &&
+                                      x[2] >= lo_[2] && x[2] < hi_[2])))
+        lmp_->domain->remap(x);
+    p.x = Vec3(x[0], x[1], x[2]);
+    p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
+    p.radius = atom.radius[i];
+    return p;
+}
+
+void LiggghtsDriver::getParticles(std::vector<ParticleState>& out) {
+    const ParticleList& list = particles();
+    reserveGrowing(out, list.size());
+    out.resize(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) out[i] = list[i];
 }
 
 void LiggghtsDriver::getParticleMasses(std::vector<double>& out) const {

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/Particle.hpp"
+#include "core/ParticleList.hpp"
 #include "core/Vec3.hpp"
 
 namespace LAMMPS_NS {
@@ -103,6 +104,10 @@ public:
     // order; remembered for setFluidForces. In a periodic box x is wrapped
     // into the box (LIGGGHTS itself wraps only when it re-neighbours).
     void getParticles(std::vector<ParticleState>& out);
+    // The same particles as a view of LIGGGHTS' own arrays, read when used
+    // (no copy: the coupled run's list), remembered for setFluidForces as
+    // getParticles does. Valid until the next advance() or command().
+    const ParticleList& particles();
     // Mass [kg] of each local particle, same order as getParticles (valid
     // until the next command or advance).
     void getParticleMasses(std::vector<double>& out) const;
@@ -134,6 +139,25 @@ public:
     LAMMPS_NS::LAMMPS* lammps() { return lmp_; }
 
 private:
+    // particles(): particle i of LIGGGHTS' local arrays, its position wrapped
+    // into a periodic box as getParticles() reports it.
+    class LocalParticles final : public ParticleList {
+    public:
+        std::size_t size() const override { return n_; }
+        ParticleState operator[](std::size_t i) const override;
+
+    private:
+        friend class LiggghtsDriver;
+        LAMMPS_NS::LAMMPS* lmp_ = nullptr;
+        std::size_t n_ = 0;
+        bool periodic_ = false;
+        // An orthogonal box's periodic extent (lo = -inf, hi = inf along a
+        // dimension that is not periodic): a centre inside needs no remap.
+        bool triclinic_ = false;
+        double lo_[3] = {0, 0, 0}, hi_[3] = {0, 0, 0};
+    };
+    LocalParticles local_;
+
     void checkLogDir() const;
     // Stores force f of local particle i and patches atom->f by its change.
     void storeForce(int i, const double* f);

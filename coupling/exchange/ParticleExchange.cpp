@@ -201,18 +201,18 @@ struct ParticleExchange::Impl {
     void dropUnownedSelf(std::size_t nDem);
 
     // The phases of forward(), in order (see ParticleExchange.hpp).
-    void findCandidates(const std::vector<ParticleState>& dem, ExchangeStats& stats, ForwardProblems& pr);
+    void findCandidates(const ParticleList& dem, ExchangeStats& stats, ForwardProblems& pr);
     void sendRecords(ExchangeStats& stats);
-    void locate(const CellLocator& mesh, const std::vector<ParticleState>& dem, ExchangeStats& stats,
+    void locate(const CellLocator& mesh, const ParticleList& dem, ExchangeStats& stats,
                 ForwardProblems& pr);
     void replyFound(ExchangeStats& stats);
-    void chooseOwners(const std::vector<ParticleState>& dem, ForwardProblems& pr);
+    void chooseOwners(const ParticleList& dem, ForwardProblems& pr);
     void sendDecisions(ExchangeStats& stats);
-    void buildRoutes(const std::vector<ParticleState>& dem, OwnedParticles& owned);
+    void buildRoutes(const ParticleList& dem, OwnedParticles& owned);
 };
 
 // ---- 1. candidates, records packed per destination ----
-void ParticleExchange::Impl::findCandidates(const std::vector<ParticleState>& dem, ExchangeStats& stats,
+void ParticleExchange::Impl::findCandidates(const ParticleList& dem, ExchangeStats& stats,
                                             ForwardProblems& pr) {
     for (int b = 0; b < nOutboxes; ++b) outboxOfRank[outboxes[b].rank] = -1;
     nOutboxes = 0;
@@ -224,7 +224,7 @@ void ParticleExchange::Impl::findCandidates(const std::vector<ParticleState>& de
     multis.clear();
     multiCandidates.clear();
     for (int i = 0; i < static_cast<int>(dem.size()); ++i) {
-        const ParticleState& p = dem[i];
+        const ParticleState p = dem[static_cast<std::size_t>(i)];
         if (!p.x.allFinite()) {
             pr.error.note("particle ", p.id, " has a non-finite position ", show(p.x),
                           "; expected finite coordinates [m]");
@@ -286,7 +286,7 @@ void ParticleExchange::Impl::sendRecords(ExchangeStats& stats) {
 }
 
 // ---- 3. locate: own records, then inbound ones ----
-void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<ParticleState>& dem,
+void ParticleExchange::Impl::locate(const CellLocator& mesh, const ParticleList& dem,
                                     ExchangeStats& stats, ForwardProblems& pr) {
     // Two hints before the locator's global search (which costs tens of
     // microseconds per particle on thin or skewed meshes):
@@ -303,7 +303,7 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const std::vector<P
     selfCell.resize(nSelf);
     std::size_t mi = 0;
     for (std::size_t j = 0; j < nSelf; ++j) {
-        const ParticleState& p = dem[static_cast<std::size_t>(selfDemAt(j))];
+        const ParticleState p = dem[static_cast<std::size_t>(selfDemAt(j))];
         int cell = mesh.findCellNear(p.x, selfHints.lastCell(j, p.id));
         if (cell < 0) {
             ++stats.hintMisses;
@@ -387,7 +387,7 @@ void ParticleExchange::Impl::replyFound(ExchangeStats& stats) {
 }
 
 // ---- 5. owner of each multi particle: the lowest rank that found it ----
-void ParticleExchange::Impl::chooseOwners(const std::vector<ParticleState>& dem, ForwardProblems& pr) {
+void ParticleExchange::Impl::chooseOwners(const ParticleList& dem, ForwardProblems& pr) {
     for (int b = 0; b < nOutboxes; ++b) outboxes[b].keep.assign(outboxes[b].multi.size(), 0);
     selfKeep.assign(selfMultiPos.size(), 0);
     for (const Multi& mp : multis) {
@@ -399,7 +399,7 @@ void ParticleExchange::Impl::chooseOwners(const std::vector<ParticleState>& dem,
             if (found) owner = cand.rank;  // candidates are in ascending rank order
         }
         if (owner < 0) {
-            const ParticleState& p = dem[mp.dem];
+            const ParticleState p = dem[static_cast<std::size_t>(mp.dem)];
             pr.outsideMesh("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (none of the ",
                            mp.count, " ranks whose CFD box contains it has a cell containing it)");
             continue;
@@ -437,7 +437,7 @@ void ParticleExchange::Impl::sendDecisions(ExchangeStats& stats) {
 }
 
 // ---- 7. routes (DEM side) and the owned list (CFD side) ----
-void ParticleExchange::Impl::buildRoutes(const std::vector<ParticleState>& dem, OwnedParticles& owned) {
+void ParticleExchange::Impl::buildRoutes(const ParticleList& dem, OwnedParticles& owned) {
     sendRoutes.clear();
     routeDem.clear();
     std::size_t sent = 0;
@@ -531,7 +531,7 @@ void OwnedParticles::reserve(std::size_t n) {
     reserveAtLeast(remote_, n);
 }
 
-void OwnedParticles::setSelf(const std::vector<ParticleState>* local, const std::vector<int>* selfDem,
+void OwnedParticles::setSelf(const ParticleList* local, const std::vector<int>* selfDem,
                              const std::vector<int>* selfCell, std::size_t count) {
     local_ = local;
     selfDem_ = selfDem;
@@ -592,6 +592,12 @@ void ParticleExchange::updateBounds() {
 }
 
 void ParticleExchange::forward(const std::vector<ParticleState>& dem, OwnedParticles& owned,
+                               Outside outsidePolicy) {
+    vectorList_.reset(&dem);
+    forward(vectorList_, owned, outsidePolicy);
+}
+
+void ParticleExchange::forward(const ParticleList& dem, OwnedParticles& owned,
                                Outside outsidePolicy) {
     Impl& m = *impl_;
     m.routesValid = false;

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "core/Particle.hpp"
+#include "core/ParticleList.hpp"
 #include "mapping/CellLocator.hpp"
 
 namespace granair {
@@ -64,7 +65,7 @@ class OwnedParticles {
 public:
     std::size_t size() const { return selfCount_ + remoteCell_.size(); }
     bool empty() const { return size() == 0; }
-    const ParticleState& state(std::size_t k) const {
+    ParticleState state(std::size_t k) const {
         const std::size_t s = k - selfBegin_;  // wraps around for k < selfBegin_
         if (s < selfCount_) return (*local_)[selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s];
         return remote_[k < selfBegin_ ? k : k - selfCount_];
@@ -106,10 +107,10 @@ private:
     // The own particles: owned[selfBegin_ .. selfBegin_ + selfCount_) are
     // (*local_)[(*selfDem_)[s]] (selfDem_ null: [s]) in cell (*selfCell_)[s];
     // the remote ones the others, in order.
-    void setSelf(const std::vector<ParticleState>* local, const std::vector<int>* selfDem,
+    void setSelf(const ParticleList* local, const std::vector<int>* selfDem,
                  const std::vector<int>* selfCell, std::size_t count);
 
-    const std::vector<ParticleState>* local_ = nullptr;  // the dem list of the last forward()
+    const ParticleList* local_ = nullptr;  // the dem list of the last forward()
     const std::vector<int>* selfDem_ = nullptr;
     const std::vector<int>* selfCell_ = nullptr;
     std::size_t selfBegin_ = 0, selfCount_ = 0;
@@ -160,6 +161,8 @@ public:
     // (Outside::error) lies in no rank's cells. With Outside::skip such a
     // particle is owned by no rank, counted in stats().outside, and gets NaN
     // values from backward() (a DEM-only run maps only what is in the mesh).
+    void forward(const ParticleList& dem, OwnedParticles& owned, Outside outside = Outside::error);
+    // The same for a vector (kept as the list: it must outlive the owned list's use).
     void forward(const std::vector<ParticleState>& dem, OwnedParticles& owned,
                  Outside outside = Outside::error);
 
@@ -210,6 +213,7 @@ private:
     double margin_;
     int rank_ = 0, size_ = 1;
     std::vector<Box> cfdBounds_;  // one per rank, not inflated
+    ParticleVector vectorList_;   // the list of forward(vector)
     std::unique_ptr<Impl> impl_;
     ExchangeStats stats_;
 };

@@ -146,6 +146,11 @@ void ParticleVtkWriter::write(double time, const std::vector<ParticleState>& par
 
 void ParticleVtkWriter::write(double time, const std::vector<ParticleState>& particles,
                               const double* fluidForces, std::size_t nForces) {
+    write(time, ParticleVector(&particles), fluidForces, nForces);
+}
+
+void ParticleVtkWriter::write(double time, const ParticleList& particles, const double* fluidForces,
+                              std::size_t nForces) {
     std::ostringstream bad;
     bad.precision(17);
     if (fluidForces && nForces != particles.size())
@@ -165,7 +170,7 @@ void ParticleVtkWriter::write(double time, const std::vector<ParticleState>& par
     raiseIfAny(comm_, rank_ == 0 ? writeCollection() : std::string());
 }
 
-std::string ParticleVtkWriter::writePiece(int output, const std::vector<ParticleState>& particles,
+std::string ParticleVtkWriter::writePiece(int output, const ParticleList& particles,
                                           const double* fluidForces) const {
     // Every rank makes the folder of this output (whoever comes first wins),
     // so no rank waits for rank 0 to create it.

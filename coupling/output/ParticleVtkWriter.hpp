@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "core/Particle.hpp"
+#include "core/ParticleList.hpp"
 #include "core/Vec3.hpp"
 
 namespace granair {
@@ -53,6 +54,8 @@ public:
     // writes zero forces (no fluid force yet, or the air off).
     void write(double time, const std::vector<ParticleState>& particles, const double* fluidForces,
                std::size_t nForces);
+    // The same from a list (the coupled run's view of the DEM's arrays).
+    void write(double time, const ParticleList& particles, const double* fluidForces, std::size_t nForces);
 
     int outputs() const { return static_cast<int>(times_.size()); }
     const std::vector<double>& times() const { return times_; }
@@ -67,8 +70,7 @@ public:
     static std::string pieceName(int output, int rank);  // particles_<k>/rank<r>.vtp
 
 private:
-    std::string writePiece(int output, const std::vector<ParticleState>& particles,
-                           const double* fluidForces) const;
+    std::string writePiece(int output, const ParticleList& particles, const double* fluidForces) const;
     std::string writeIndex(int output) const;
     std::string writeCollection() const;
 

@@ -42,6 +42,35 @@ std::vector<ParticleState> randomParticles(int n, unsigned seed) {
     return ps;
 }
 
+// A list that builds each particle when read, from arrays of its own (as
+// LiggghtsDriver::particles() reads LIGGGHTS' arrays), counting the reads.
+class ArrayList final : public ParticleList {
+public:
+    explicit ArrayList(const std::vector<ParticleState>& ps) {
+        for (const ParticleState& p : ps) {
+            id.push_back(p.id);
+            for (int a = 0; a < 3; ++a) {
+                x.push_back(p.x[a]);
+                v.push_back(p.v[a]);
+            }
+            r.push_back(p.radius);
+        }
+    }
+    std::size_t size() const override { return id.size(); }
+    ParticleState operator[](std::size_t i) const override {
+        ++reads;
+        ParticleState p;
+        p.id = id[i];
+        p.x = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+        p.v = Vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+        p.radius = r[i];
+        return p;
+    }
+    std::vector<std::int64_t> id;
+    std::vector<double> x, v, r;
+    mutable std::size_t reads = 0;
+};
+
 }  // namespace
 
 // (Few test cases: every ctest test pays an MPI start-up.)
@@ -109,6 +138,28 @@ TEST_CASE("exchange on one rank owns every particle in dem order, backward round
         CHECK(std::count(sinks.begin(), sinks.end(), 1) == static_cast<long>(dem.size()));
     }
     CHECK_THROWS_WITH(ex.backwardSend(), Contains("without backwardFill"));
+
+    // A list read when used gives the same owned particles and cells as its
+    // vector, and the owned list reads this rank's particles from it (no copy).
+    {
+        const auto vec = randomParticles(200, 7);
+        ArrayList list(vec);
+        OwnedParticles fromVec, fromList;
+        ex.forward(list, fromList);
+        CHECK(list.reads >= vec.size());
+        ParticleExchange ex2(MPI_COMM_SELF, mesh);
+        ex2.forward(vec, fromVec);
+        REQUIRE(fromList.size() == fromVec.size());
+        for (std::size_t k = 0; k < fromVec.size(); ++k) {
+            CHECK(fromList[k].state.id == fromVec[k].state.id);
+            CHECK(fromList[k].state.x == fromVec[k].state.x);
+            CHECK(fromList[k].state.v == fromVec[k].state.v);
+            CHECK(fromList[k].state.radius == fromVec[k].state.radius);
+            CHECK(fromList[k].cell == fromVec[k].cell);
+        }
+        list.v[0] = 42.0;  // read through: the owned list holds no copy of its own
+        CHECK(fromList.state(0).v[0] == 42.0);
+    }
 
     // No particles at all.
     owned.add(ParticleState{}, 0);  // cleared by forward()
