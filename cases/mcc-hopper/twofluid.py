@@ -141,6 +141,13 @@ def numbers(a, air):
         f = gc.calibration.fit(P.CALIBRATION)
         rheology = gc.calibration.block(rheology, P.CALIBRATION, d=P.D_PARTICLE, where=block)
         phi = f["rho_p"] * f["phi_max"] / P.RHO_P
+    if a.shear_pressure_phi_max is not None:
+        # as the wedge silo's --shear-pressure-phi-max: p_I's packing at alphaMax
+        # (or a number), phiMin moved with it
+        phi_p = (gc.two_fluid.closure(phi)["ALPHA_MAX"] if a.shear_pressure_phi_max == "alphaMax"
+                 else float(a.shear_pressure_phi_max))
+        span = gc.calibration.entry(rheology, "phiMax", block) - gc.calibration.entry(rheology, "phiMin", block)
+        rheology = gc.two_fluid.p_i_packing(rheology, phi_p, span, "twofluid.py --shear-pressure-phi-max (span kept)")
     fill_z, fill_g = fill(lay, phi)
     dz = lay["dz"]
     mu_factor, drag_scale = gc.two_fluid.dry(air, a.dry)
@@ -180,6 +187,7 @@ def post(run, out, name, v, a, rec):
                     model=(("with air" if air else DRY[a.dry]) + f", staircase wedge R_o/{v['N']}: twoPhaseEulerFoam + "
                            "granair muI (" + ("DEM-calibrated mu(I), d 660 um in I" if v["RHEOLOGY_FROM"] == "calibration"
                                               else "Remmelgas et al. mu(I)")
+                           + (f", p_I packing {a.shear_pressure_phi_max}" if a.shear_pressure_phi_max else "")
                            + f"), ErgunGidaspow, Coulomb walls (mu_w {P.WALL_FRICTION:g})"),
                     b_mm=P.D_OUTLET * 1e3, air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
                     outlet_dpdz_Pa_m=G if air else None, wall_time_s=wall, cores=1, timeseries="timeseries.csv")
@@ -237,6 +245,9 @@ def main():
     ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
                     help="the mu(I) block: Remmelgas et al.'s (default) or the DEM calibration of the cg-DEM's "
                          "parcels at the primary d = 660 um in I, filled at its phi_max (study.py --rheology-from)")
+    ap.add_argument("--shear-pressure-phi-max", default=None, metavar="PHI|alphaMax",
+                    help="p_I's solid fraction at I = 0, phiMin moved with it; alphaMax: the contact law's "
+                         "(the fill + 0.04) (default: the rheology's phiMax)")
     ap.add_argument("--mesh", type=int, default=5, help="cells across the orifice radius (default 5: 2.5 mm)")
     ap.add_argument("--end", type=float, default=2.0, help="simulated time [s] (default 2, the continuum's)")
     ap.add_argument("--chunk", type=float, default=0.25,
@@ -248,6 +259,13 @@ def main():
     if not (a.chunk > 0 and a.end > a.steady_from >= 0 and a.mesh >= 2):
         ap.error(f"--chunk {a.chunk:g}, --end {a.end:g}, --steady-from {a.steady_from:g}, --mesh {a.mesh}: "
                  "expected chunk > 0, end > steady-from >= 0 and at least 2 cells across the radius")
+    if a.shear_pressure_phi_max not in (None, "alphaMax"):
+        try:
+            ok = 0 < float(a.shear_pressure_phi_max) <= 1
+        except ValueError:
+            ok = False
+        if not ok:
+            ap.error(f"--shear-pressure-phi-max {a.shear_pressure_phi_max}: expected 0 < PHI <= 1 or alphaMax")
     airs = {"on": [True], "off": [False], "both": [True, False]}[a.air]
     res = gc.runner.pool([("air" if x else "noair", run_one, (a, x)) for x in airs], 2, "mcc-hopper two-fluid")
     if a.setup_only or len(res) < 2:

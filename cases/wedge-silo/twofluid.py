@@ -91,9 +91,8 @@ def numbers(a, b_mm, air):
         # read by p_I only, mu(I) does not use it); the span phiMax - phiMin is kept
         phi_max = v["ALPHA_MAX"] if a.shear_pressure_phi_max == "alphaMax" else float(a.shear_pressure_phi_max)
         span = v["PHI_MAX"] - v["PHI_MIN"]
-        for key, value in (("phiMax", phi_max), ("phiMin", phi_max - span)):
-            v["RHEOLOGY"] = gc.calibration.set_entry(v["RHEOLOGY"], key, value,
-                                                     "twofluid.py --shear-pressure-phi-max (span kept)")
+        v["RHEOLOGY"] = gc.two_fluid.p_i_packing(v["RHEOLOGY"], phi_max, span,
+                                                 "twofluid.py --shear-pressure-phi-max (span kept)")
         v.update(PHI_MAX=phi_max, PHI_MIN=phi_max - span)
     return v
 

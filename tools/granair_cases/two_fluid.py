@@ -27,7 +27,7 @@ import re
 
 import numpy as np
 
-from . import CaseError, chunks, foam, runner, series as _series, template
+from . import CaseError, calibration, chunks, foam, runner, series as _series, template
 
 # the patches the powder leaves through, their flows summed (positive outwards)
 OUT_PATCHES = ("outlet", "freefall")
@@ -64,6 +64,17 @@ def closure(phi_fill):
     docs/two-fluid-model.md "On a silo")."""
     return dict(ALPHA_MIN_FRICTION=phi_fill - 0.01, ALPHA_MAX=phi_fill + 0.04, FR=0.05, FR_ETA=2, FR_P=5,
                 ALPHA_DELTA_MIN=0.005, SHEAR_PRESSURE="on", FACE_MOMENTUM="no", N_OUTER=1, DRAG_SCALE=1)
+
+
+def p_i_packing(rheology, phi_max, span, note):
+    """The muI block with the shear-induced pressure's packing at I = 0 (its phiMax,
+    read by p_I only: mu(I) does not use it) at phi_max and phiMin = phi_max - span.
+    Why: where the contact law lets the powder compact above phiMax (up to the
+    closure's alphaMax), p_I's denominator max(phiMax - alpha, delta) sits at its
+    floor and p_I is large (cfd-side/twoFluid/MuIFrictionalStress.C)."""
+    for key, value in (("phiMax", phi_max), ("phiMin", phi_max - span)):
+        rheology = calibration.set_entry(rheology, key, value, note)
+    return rheology
 
 
 def block_means(t, dt, columns, block):
