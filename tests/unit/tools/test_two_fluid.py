@@ -86,6 +86,13 @@ except two_fluid.CaseError as e:
     if "density" not in str(e):
         failures.append(f"dry: the message should name the way, got: {e}")
 
+# p_I's packing moved, the span kept, the block's other entries untouched
+blk = "rheology\n{\n    type muI;\n    muS 0.4;\n    phiMax 0.6;\n    phiMin 0.45;\n    etaMax 1e5;\n}\n"
+moved = two_fluid.p_i_packing(blk, 0.64, 0.15, "test")
+check("p_i_packing: phiMax", two_fluid.calibration.entry(moved, "phiMax"), 0.64)
+check("p_i_packing: phiMin", two_fluid.calibration.entry(moved, "phiMin"), 0.49, tol=1e-9)
+check("p_i_packing: muS kept", two_fluid.calibration.entry(moved, "muS"), 0.4)
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
