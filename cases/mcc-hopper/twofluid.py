@@ -9,6 +9,11 @@ on an axisymmetric staircase wedge.
                 [--mesh N] [--end T] [--chunk T]
                 [--steady-from T] [--resume] [--out DIR] [--setup-only]
 
+--rheology-from calibration: the DEM calibration's mu(I) at the primary
+660 um in I, filled at its phi_max; --shear-pressure-phi-max alphaMax puts
+p_I's packing at the contact law's alphaMax (the calibrated phiMax 0.591 is
+below it; README "Two-fluid level").
+
 Dry: the solver has two phases, so the air stays, all but uncoupled: by
 default its drag times 1/100 (`--dry drag`, granair drag's `scale`), or its
 viscosity times 1/100 as the wedge silo's dry runs (`--dry viscosity`), which
