@@ -230,7 +230,8 @@ def compare(a, res):
                      float(gc.series.read_keys(os.path.join(HERE, "results", "calibrated", "d660um", "summary.txt"))
                            ["steady_mass_flow_kg_s"]), None))
     lines = [f"# MCC hopper, two-fluid level against the others (twofluid.py --mesh {a.mesh}"
-             f"{' --rheology-from calibration' if a.rheology_from == 'calibration' else ''})", "",
+             f"{' --rheology-from calibration' if a.rheology_from == 'calibration' else ''}"
+             f"{f' --shear-pressure-phi-max {a.shear_pressure_phi_max}' if a.shear_pressure_phi_max else ''})", "",
              "| run | W [kg/s] | outlet dp/dz [Pa/m] |", "|---|---:|---:|"]
     lines += [f"| {r} | {w:.4g} | {'' if g is None else f'{g:.4g}'} |" for r, w, g in rows]
     effect = {"two-fluid": rows[0][1] / rows[1][1] - 1, "continuum": rows[2][1] / rows[3][1] - 1}
