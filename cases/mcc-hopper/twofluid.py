@@ -149,8 +149,7 @@ def numbers(a, air):
     if a.shear_pressure_phi_max is not None:
         # as the wedge silo's --shear-pressure-phi-max: p_I's packing at alphaMax
         # (or a number), phiMin moved with it
-        phi_p = (gc.two_fluid.closure(phi)["ALPHA_MAX"] if a.shear_pressure_phi_max == "alphaMax"
-                 else float(a.shear_pressure_phi_max))
+        phi_p = gc.two_fluid.p_i_phi_max(a.shear_pressure_phi_max, gc.two_fluid.closure(phi)["ALPHA_MAX"])
         span = gc.calibration.entry(rheology, "phiMax", block) - gc.calibration.entry(rheology, "phiMin", block)
         rheology = gc.two_fluid.p_i_packing(rheology, phi_p, span, "twofluid.py --shear-pressure-phi-max (span kept)")
     fill_z, fill_g = fill(lay, phi)
@@ -265,13 +264,7 @@ def main():
     if not (a.chunk > 0 and a.end > a.steady_from >= 0 and a.mesh >= 2):
         ap.error(f"--chunk {a.chunk:g}, --end {a.end:g}, --steady-from {a.steady_from:g}, --mesh {a.mesh}: "
                  "expected chunk > 0, end > steady-from >= 0 and at least 2 cells across the radius")
-    if a.shear_pressure_phi_max not in (None, "alphaMax"):
-        try:
-            ok = 0 < float(a.shear_pressure_phi_max) <= 1
-        except ValueError:
-            ok = False
-        if not ok:
-            ap.error(f"--shear-pressure-phi-max {a.shear_pressure_phi_max}: expected 0 < PHI <= 1 or alphaMax")
+    gc.two_fluid.check_p_i_option(ap, a.shear_pressure_phi_max)
     airs = {"on": [True], "off": [False], "both": [True, False]}[a.air]
     res = gc.runner.pool([("air" if x else "noair", run_one, (a, x)) for x in airs], 2, "mcc-hopper two-fluid")
     if a.setup_only or len(res) < 2:

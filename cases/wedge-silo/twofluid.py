@@ -89,7 +89,7 @@ def numbers(a, b_mm, air):
     if a.shear_pressure_phi_max is not None:
         # p_I's packing at I = 0 (MuIFrictionalStress: the rheology block's phiMax is
         # read by p_I only, mu(I) does not use it); the span phiMax - phiMin is kept
-        phi_max = v["ALPHA_MAX"] if a.shear_pressure_phi_max == "alphaMax" else float(a.shear_pressure_phi_max)
+        phi_max = gc.two_fluid.p_i_phi_max(a.shear_pressure_phi_max, v["ALPHA_MAX"])
         span = v["PHI_MAX"] - v["PHI_MIN"]
         v["RHEOLOGY"] = gc.two_fluid.p_i_packing(v["RHEOLOGY"], phi_max, span,
                                                  "twofluid.py --shear-pressure-phi-max (span kept)")
@@ -278,13 +278,7 @@ def main():
         ap.error(f"--outer-until {a.outer_until:g}: expected a time >= 0 [s]")
     if not 0 < a.until <= 1:
         ap.error(f"--until {a.until:g}: expected a share of the fill in (0, 1]")
-    if a.shear_pressure_phi_max not in (None, "alphaMax"):
-        try:
-            ok = 0 < float(a.shear_pressure_phi_max) <= 1
-        except ValueError:
-            ok = False
-        if not ok:
-            ap.error(f"--shear-pressure-phi-max {a.shear_pressure_phi_max}: expected 0 < PHI <= 1 or alphaMax")
+    gc.two_fluid.check_p_i_option(ap, a.shear_pressure_phi_max)
     airs = {"on": [True], "off": [False], "both": [True, False]}[a.air]
     tasks = [(f"b{b}_{'air' if x else 'noair'}", run_one, (a, b, x)) for b in (a.b or [10]) for x in airs]
     res = gc.runner.pool(tasks, 2, "wedge-silo two-fluid")

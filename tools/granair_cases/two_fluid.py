@@ -66,6 +66,25 @@ def closure(phi_fill):
                 ALPHA_DELTA_MIN=0.005, SHEAR_PRESSURE="on", FACE_MOMENTUM="no", N_OUTER=1, DRAG_SCALE=1)
 
 
+def check_p_i_option(ap, option):
+    """The cases' --shear-pressure-phi-max: None, alphaMax or a number 0 < PHI <= 1
+    (else ap.error, naming the option)."""
+    if option in (None, "alphaMax"):
+        return
+    try:
+        ok = 0 < float(option) <= 1
+    except ValueError:
+        ok = False
+    if not ok:
+        ap.error(f"--shear-pressure-phi-max {option}: expected 0 < PHI <= 1 or alphaMax")
+
+
+def p_i_phi_max(option, alpha_max):
+    """p_I's packing for a checked --shear-pressure-phi-max (not None): the closure's
+    alpha_max for alphaMax, else the number."""
+    return alpha_max if option == "alphaMax" else float(option)
+
+
 def p_i_packing(rheology, phi_max, span, note):
     """The muI block with the shear-induced pressure's packing at I = 0 (its phiMax,
     read by p_I only: mu(I) does not use it) at phi_max and phiMin = phi_max - span.
