@@ -332,9 +332,13 @@ ParticleState LiggghtsDriver::LocalParticles::operator[](std::size_t i) const {
     // up to half the skin outside the box (and outside the CFD mesh, which
     // covers the box). Report the wrapped position, as LIGGGHTS will hold it.
     // Domain::remap leaves an orthogonal box's inside point as it is (its
-    // loops do not run, max(x, lo) = x): only the few outside call it.
+    // loops do not run, max(x, lo) = x): only the few outside call it. A
+    // non-finite centre is left as it is: remap's MAX(x, lo) would turn a NaN
+    // along a periodic dimension into lo, hiding it from the exchange's check
+    // (which names the particle and the value).
     if (periodic_ && (triclinic_ || !(x[0] >= lo_[0] && x[0] < hi_[0] && x[1] >= lo_[1] && x[1] < hi_[1] &&
-                                      x[2] >= lo_[2] && x[2] < hi_[2])))
+                                      x[2] >= lo_[2] && x[2] < hi_[2])) &&
+        allFinite3(x))
         lmp_->domain->remap(x);
     p.x = Vec3(x[0], x[1], x[2]);
     p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
