@@ -260,29 +260,56 @@ def group_of(level):
     return os.path.dirname(d) if os.path.basename(level["_path"]) == "level.json" else d
 
 
+def legend_room(plt, n_axes, n_entries, width, fontsize, plot_height=4.6):
+    """A figure of n_axes side by side with room below them for a one-column legend
+    of n_entries lines (a case collects tens of runs: a legend inside the axes
+    would hide the curves, a fixed figure cut it off); legend_below(fig, ax) places it."""
+    line = 1.5 * fontsize / 72.0                # inches per legend line
+    top, xlabel, legend = 0.45, 0.75, n_entries * line + 0.2
+    height = top + plot_height + xlabel + legend
+    fig, axes = plt.subplots(1, n_axes, figsize=(width, height), squeeze=False)
+    fig.subplots_adjust(left=0.9 / width, right=1 - 0.3 / width, top=1 - top / height,
+                        bottom=(xlabel + legend) / height, wspace=0.28)
+    fig._granair_legend_top = legend / height
+    return fig, list(axes[0])
+
+
+def legend_below(fig, ax, fontsize):
+    box = ax.get_position()
+    ax.legend(fontsize=fontsize, loc="upper center", bbox_to_anchor=(0.5 * (box.x0 + box.x1), fig._granair_legend_top),
+              bbox_transform=fig.transFigure, ncol=1, frameon=False)
+
+
 def plot(rows, band, ratio, out, title):
     plt = plots.pyplot()
     # one colour per dry run and the run with air checked against it (the
     # Crewdson pair), one per unpaired run: dry dotted, with air solid
-    colour, n = {}, 0
+    # (matplotlib's ten colours, or tab20's twenty when there are more groups:
+    # a repeated colour would make two levels one in the legend)
+    group, n = {}, 0
     for r in [x for x in rows if not x["air"]] + [x for x in rows if x["air"]]:
         if r.get("series") is None:
             continue
         pair = r.get("pair")
-        if pair is not None and id(pair) in colour:
-            colour[id(r)] = colour[id(pair)]
+        if pair is not None and id(pair) in group:
+            group[id(r)] = group[id(pair)]
         else:
-            colour[id(r)] = f"C{n % 10}"
+            group[id(r)] = n
             n += 1
+    palette = [f"C{i}" for i in range(10)] if n <= 10 else [plt.get_cmap("tab20")(i) for i in range(20)]
+    colour = {k: palette[g % len(palette)] for k, g in group.items()}
 
     def colour_of(r):
         return colour[id(r)]
 
     def label_of(r):
-        model = r["model"] if len(r["model"]) <= 48 else r["model"][:46].rstrip(" ,") + "..."
-        return f"{r['level']}, {'air' if r['air'] else 'dry'}: {model}"
+        # the source folder, which compare.md's rows also name: runs of one
+        # model differ late in its description (mesh, packing, window), so a
+        # shortened description repeats in the legend; the folder does not
+        return f"{r['level']}, {'air' if r['air'] else 'dry'}: {r.get('source', '')}"
 
-    fig, ax = plt.subplots(figsize=(8, 6.4))
+    plotted = [r for r in rows if r.get("series") is not None]
+    fig, (ax,) = legend_room(plt, 1, len(plotted) + 2, 8, 7)
     ax.axhspan(band[0], band[1], color="0.85", label="Beverloo band (closed form, dry)")
     ax.axhline(0.5 * (band[0] + band[1]) * ratio, color="0.4", ls="--", lw=1,
                label="Beverloo x Carleton (closed form, air)")
@@ -295,12 +322,12 @@ def plot(rows, band, ratio, out, title):
     ax.set_xlabel("t [s]")
     ax.set_ylabel("mass flow [kg/s]")
     ax.set_title(title, fontsize=10)
-    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
+    legend_below(fig, ax, 7)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    plots.save(fig, os.path.join(out, "mass_flow.png"))
+    plots.save(fig, os.path.join(out, "mass_flow.png"), tight=True)
 
-    fig, ax = plt.subplots(figsize=(8, 6.0))
+    with_dpdz = [r for r in rows if r.get("series") is not None and r["air"] and "outlet_dpdz_Pa_m" in r["series"]]
+    fig, (ax,) = legend_room(plt, 1, len(with_dpdz), 8, 7)
     n = 0
     for r in rows:
         s = r.get("series")
@@ -315,10 +342,9 @@ def plot(rows, band, ratio, out, title):
     ax.set_ylabel("outlet air pressure gradient dp/dz [Pa/m]")
     ax.set_title(title, fontsize=10)
     if n:
-        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
+        legend_below(fig, ax, 7)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    plots.save(fig, os.path.join(out, "outlet_dpdz.png"))
+    plots.save(fig, os.path.join(out, "outlet_dpdz.png"), tight=True)
     with_level = [r for r in rows if r.get("series") is not None and "fill_level_m" in r["series"]]
     if with_level:
         fill_level_plot(with_level, band, ratio, out, title, colour_of, label_of)
@@ -328,7 +354,8 @@ def fill_level_plot(rows, band, ratio, out, title, colour_of, label_of, width=0.
     """Mass flow and outlet dp/dz against the fill level: means over `width` s windows of
     each series (a per-step series is noisy; a series of window means is used as it is)."""
     plt = plots.pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(13, 6.0))
+    n_air = sum(1 for r in rows if r["air"] and "outlet_dpdz_Pa_m" in r["series"])
+    fig, axes = legend_room(plt, 2, max(len(rows) + 2, n_air), 13, 6)
     axes[0].axhspan(band[0], band[1], color="0.85", label="Beverloo band (closed form, dry)")
     axes[0].axhline(0.5 * (band[0] + band[1]) * ratio, color="0.4", ls="--", lw=1,
                     label="Beverloo x Carleton (closed form, air)")
@@ -348,10 +375,9 @@ def fill_level_plot(rows, band, ratio, out, title, colour_of, label_of, width=0.
     for ax in axes:
         ax.set_xlabel("fill level: bed height above the orifice [mm] (discharge goes right to left)")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=6, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1, frameon=False)
+        legend_below(fig, ax, 6)
     fig.suptitle(f"{title}: against the fill level", fontsize=10)
-    fig.tight_layout()
-    plots.save(fig, os.path.join(out, "fill_level.png"))
+    plots.save(fig, os.path.join(out, "fill_level.png"), tight=True)
 
 
 def main(argv=None):

@@ -8,7 +8,7 @@
     errorbars(ax, x, rows, key, label)                   mean +- SD of rows[key], rows[key + "_sd"] against x
     grains(fig, ax, x, z, d, colours)                    particles of a slice as discs of their own size
     lc, mean = force_chains(ax, pairs, half_width)       the contacts stronger than the mean in a slice
-    save(fig, path)
+    save(fig, path, tight=False)                         tight: the saved area grows to hold a legend outside the axes
 """
 import os
 
@@ -24,8 +24,10 @@ def pyplot():
     return plt
 
 
-def save(fig, path, dpi=120):
-    fig.savefig(path, dpi=dpi)
+def save(fig, path, dpi=120, tight=False):
+    # tight: a legend placed below the axes (many levels in one plot) would
+    # otherwise be cut at the figure's edge
+    fig.savefig(path, dpi=dpi, **({"bbox_inches": "tight"} if tight else {}))
     pyplot().close(fig)
     return path
 
