@@ -102,6 +102,15 @@ def time_dir(case, t, tol=1e-9):
     return next((p for tt, p in time_dirs(case) if abs(tt - t) < tol), None)
 
 
+def read_entry(path, key):
+    """The value (text) of the top-level entry `key value;` of a dictionary file."""
+    with open(path) as fh:
+        m = re.search(r"^\s*" + re.escape(key) + r"\s+([^;\n]*);", fh.read(), flags=re.M)
+    if m is None:
+        raise CaseError(f"{path}: no entry '{key}'")
+    return m.group(1).strip()
+
+
 def set_entry(path, key, value):
     """Set the top-level entry `key value;` of a dictionary file (it must exist)."""
     with open(path) as fh:

@@ -249,8 +249,15 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
     def step(rec):
         if not rec["chunks"]:
             cpu = 0.0
+            # The mesh's points at 15 digits, the fields at the template's: with 8
+            # digits the MCC hopper's wedge faces' normals differed by 4e-8 and
+            # OpenFOAM's wedgePolyPatch warned "not planar" for every face, in
+            # every log (measured: 168 warnings per chunk).
+            precision = foam.read_entry(control, "writePrecision")
+            foam.set_entry(control, "writePrecision", 15)
             for cmd in (["blockMesh"], ["topoSet"], ["subsetMesh", "silo", "-patch", "walls", "-overwrite"]):
                 cpu += runner.run(cmd, run_dir)
+            foam.set_entry(control, "writePrecision", precision)
             # subsetMesh maps the fields onto the cut mesh, but the faces it exposes
             # (the staircase walls) get undefined patch values: the powder's
             # coulombWallSlip valueFraction came out 1e5 on 62 of 226 wall faces in

@@ -93,6 +93,9 @@ class Foam(unittest.TestCase):
             write(os.path.join(d, "controlDict"), "stopAt          endTime;\nendTime 2;\n")
             gc.foam.set_entry(os.path.join(d, "controlDict"), "stopAt", "writeNow")
             self.assertIn("stopAt          writeNow;", read(os.path.join(d, "controlDict")))
+            self.assertEqual(gc.foam.read_entry(os.path.join(d, "controlDict"), "endTime"), "2")
+            with self.assertRaisesRegex(CaseError, "no entry 'deltaT'"):
+                gc.foam.read_entry(os.path.join(d, "controlDict"), "deltaT")
             with self.assertRaisesRegex(CaseError, "no entry 'deltaT'"):
                 gc.foam.set_entry(os.path.join(d, "controlDict"), "deltaT", 1)
             for t in ("0", "0.25", "0.5"):
