@@ -3,7 +3,7 @@
 (cases/wedge-silo), as ratios measured in one run.
 
     bench/wedge/run.py [--size demo|study] [--b 10] [--np 1] [--t-end 0.3] [--repeat 2]
-                       [--configs noair forces-off air] [--work DIR] [--name NAME]
+                       [--configs noair forces-off air] [--full-depth] [--work DIR] [--name NAME]
 
 One fill (study.py --stage fill, kept in WORK and reused), then the
 discharge from it --repeat times in each configuration, the configurations
@@ -16,6 +16,10 @@ report): coupled / DEM-only and forces-off / DEM-only throughput
 (particle-steps per second of the coupling loop, wall and CPU), the mapping
 + exchange share of the loop, the DEM's cost per particle-step, the coupling
 buffers; into bench/results/NAME.{md,csv} (default wedge-<size>-np<np>).
+
+--full-depth: the silo's whole 60 mm depth between walls instead of the
+periodic slice (study.py --full-depth: about 12x the parcels, a 3-D air mesh
+11 cells deep; default name wedge-<size>-full-depth-np<np>).
 
 --contacts adds one untimed run of `noair` and `air` whose LIGGGHTS script
 also sums `compute contact/atom` (printed with thermo at every coupling
@@ -50,7 +54,7 @@ CONTACTS = ("compute granairContacts all contact/atom\n"
 def study(a, *args):
     """cases/wedge-silo/study.py with this benchmark's size, width and ranks."""
     cmd = [sys.executable, STUDY, "--size", a.size, "--b", str(a.b), "--np", str(a.np), "--jobs", "1",
-           "--out", a.work] + list(args)
+           "--out", a.work] + (["--full-depth"] if a.full_depth else []) + list(args)
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
 
@@ -127,9 +131,12 @@ def share(r):
 def report(a, runs, load, counts):
     best = {c: min(rs, key=lambda r: r["loop_s"]) for c, rs in runs.items()}
     rows, lines = [], [
-        f"# Wedge silo ({a.size}, b = {a.b} mm, {a.np} rank(s)): the speed targets on the real case",
+        f"# Wedge silo ({a.size}, b = {a.b} mm, {'full 60 mm depth, ' if a.full_depth else ''}{a.np} rank(s)): "
+        "the speed targets on the real case",
         "",
-        f"Written by `bench/wedge/run.py --size {a.size} --b {a.b} --np {a.np} --t-end {a.t_end:g} --repeat {a.repeat}` "
+        f"Written by `bench/wedge/run.py --size {a.size} --b {a.b} --np {a.np} --t-end {a.t_end:g} --repeat {a.repeat}"
+        f"{' --configs ' + ' '.join(a.configs) if list(a.configs) != list(CONFIGS) else ''}"
+        f"{' --full-depth' if a.full_depth else ''}` "
         "(see its docstring and bench/README.md): one settled fill, then the first "
         f"{a.t_end:g} s of the discharge in each configuration, the fastest of {a.repeat} repeat(s) shown (slowest in "
         "brackets). `forces-off` is the air run with `forces { applied off; }`: every part of the coupling computed "
@@ -190,14 +197,17 @@ def main():
     ap.add_argument("--t-end", type=float, default=0.3, help="discharge time of each run [s]")
     ap.add_argument("--repeat", type=int, default=2)
     ap.add_argument("--configs", nargs="+", default=list(CONFIGS), choices=CONFIGS)
-    ap.add_argument("--work", default=None, help="work folder (default build/bench-wedge-<size>)")
+    ap.add_argument("--work", default=None, help="work folder (default build/bench-wedge-<size>[-full-depth])")
     ap.add_argument("--contacts", action="store_true", help="also count the contacts (untimed runs)")
+    ap.add_argument("--full-depth", action="store_true",
+                    help="the silo's whole depth between walls, not the periodic slice (study.py --full-depth)")
     ap.add_argument("--results", default=os.path.join(ROOT, "bench", "results"))
-    ap.add_argument("--name", default=None, help="results file name (default wedge-<size>-np<np>)")
+    ap.add_argument("--name", default=None, help="results file name (default wedge-<size>[-full-depth]-np<np>)")
     a = ap.parse_args()
     build = os.environ.get("GRANAIR_BUILD", os.path.join(ROOT, "build"))
-    a.work = os.path.abspath(a.work or os.path.join(build, f"bench-wedge-{a.size}"))
-    a.name = a.name or f"wedge-{a.size}-np{a.np}"
+    depth = "-full-depth" if a.full_depth else ""
+    a.work = os.path.abspath(a.work or os.path.join(build, f"bench-wedge-{a.size}{depth}"))
+    a.name = a.name or f"wedge-{a.size}{depth}-np{a.np}"
     load = f"{time.strftime('%Y-%m-%dT%H:%MZ', time.gmtime())}, {os.cpu_count()} cores, load average at start " \
            f"{' '.join(open('/proc/loadavg').read().split()[:3])}"
     prepare(a)
