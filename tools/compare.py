@@ -263,20 +263,20 @@ def group_of(level):
 def legend_room(plt, n_axes, n_entries, width, fontsize, plot_height=4.6):
     """A figure of n_axes side by side with room below them for a one-column legend
     of n_entries lines (a case collects tens of runs: a legend inside the axes
-    would hide the curves, a fixed figure cut it off); legend_below(fig, ax) places it."""
+    would hide the curves, a fixed figure cut it off): the figure, its axes and the
+    legend's top in figure coordinates, which legend_below(fig, ax, top, ...) takes."""
     line = 1.5 * fontsize / 72.0                # inches per legend line
     top, xlabel, legend = 0.45, 0.75, n_entries * line + 0.2
     height = top + plot_height + xlabel + legend
     fig, axes = plt.subplots(1, n_axes, figsize=(width, height), squeeze=False)
     fig.subplots_adjust(left=0.9 / width, right=1 - 0.3 / width, top=1 - top / height,
                         bottom=(xlabel + legend) / height, wspace=0.28)
-    fig._granair_legend_top = legend / height
-    return fig, list(axes[0])
+    return fig, list(axes[0]), legend / height
 
 
-def legend_below(fig, ax, fontsize):
+def legend_below(fig, ax, top, fontsize):
     box = ax.get_position()
-    ax.legend(fontsize=fontsize, loc="upper center", bbox_to_anchor=(0.5 * (box.x0 + box.x1), fig._granair_legend_top),
+    ax.legend(fontsize=fontsize, loc="upper center", bbox_to_anchor=(0.5 * (box.x0 + box.x1), top),
               bbox_transform=fig.transFigure, ncol=1, frameon=False)
 
 
@@ -309,7 +309,7 @@ def plot(rows, band, ratio, out, title):
         return f"{r['level']}, {'air' if r['air'] else 'dry'}: {r.get('source', '')}"
 
     plotted = [r for r in rows if r.get("series") is not None]
-    fig, (ax,) = legend_room(plt, 1, len(plotted) + 2, 8, 7)
+    fig, (ax,), top = legend_room(plt, 1, len(plotted) + 2, 8, 7)
     ax.axhspan(band[0], band[1], color="0.85", label="Beverloo band (closed form, dry)")
     ax.axhline(0.5 * (band[0] + band[1]) * ratio, color="0.4", ls="--", lw=1,
                label="Beverloo x Carleton (closed form, air)")
@@ -322,12 +322,12 @@ def plot(rows, band, ratio, out, title):
     ax.set_xlabel("t [s]")
     ax.set_ylabel("mass flow [kg/s]")
     ax.set_title(title, fontsize=10)
-    legend_below(fig, ax, 7)
+    legend_below(fig, ax, top, 7)
     ax.grid(alpha=0.3)
     plots.save(fig, os.path.join(out, "mass_flow.png"), tight=True)
 
     with_dpdz = [r for r in rows if r.get("series") is not None and r["air"] and "outlet_dpdz_Pa_m" in r["series"]]
-    fig, (ax,) = legend_room(plt, 1, len(with_dpdz), 8, 7)
+    fig, (ax,), top = legend_room(plt, 1, len(with_dpdz), 8, 7)
     n = 0
     for r in rows:
         s = r.get("series")
@@ -342,7 +342,7 @@ def plot(rows, band, ratio, out, title):
     ax.set_ylabel("outlet air pressure gradient dp/dz [Pa/m]")
     ax.set_title(title, fontsize=10)
     if n:
-        legend_below(fig, ax, 7)
+        legend_below(fig, ax, top, 7)
     ax.grid(alpha=0.3)
     plots.save(fig, os.path.join(out, "outlet_dpdz.png"), tight=True)
     with_level = [r for r in rows if r.get("series") is not None and "fill_level_m" in r["series"]]
@@ -355,7 +355,7 @@ def fill_level_plot(rows, band, ratio, out, title, colour_of, label_of, width=0.
     each series (a per-step series is noisy; a series of window means is used as it is)."""
     plt = plots.pyplot()
     n_air = sum(1 for r in rows if r["air"] and "outlet_dpdz_Pa_m" in r["series"])
-    fig, axes = legend_room(plt, 2, max(len(rows) + 2, n_air), 13, 6)
+    fig, axes, top = legend_room(plt, 2, max(len(rows) + 2, n_air), 13, 6)
     axes[0].axhspan(band[0], band[1], color="0.85", label="Beverloo band (closed form, dry)")
     axes[0].axhline(0.5 * (band[0] + band[1]) * ratio, color="0.4", ls="--", lw=1,
                     label="Beverloo x Carleton (closed form, air)")
@@ -375,7 +375,7 @@ def fill_level_plot(rows, band, ratio, out, title, colour_of, label_of, width=0.
     for ax in axes:
         ax.set_xlabel("fill level: bed height above the orifice [mm] (discharge goes right to left)")
         ax.grid(alpha=0.3)
-        legend_below(fig, ax, 6)
+        legend_below(fig, ax, top, 6)
     fig.suptitle(f"{title}: against the fill level", fontsize=10)
     plots.save(fig, os.path.join(out, "fill_level.png"), tight=True)
 

@@ -102,21 +102,26 @@ def time_dir(case, t, tol=1e-9):
     return next((p for tt, p in time_dirs(case) if abs(tt - t) < tol), None)
 
 
+def _entry(key):
+    """The top-level entry `key value;`: group 1 up to the value, group 2 the value
+    (one pattern for read_entry and set_entry)."""
+    return re.compile(r"^(\s*" + re.escape(key) + r"\s+)([^;\n]*);", re.M)
+
+
 def read_entry(path, key):
     """The value (text) of the top-level entry `key value;` of a dictionary file."""
     with open(path) as fh:
-        m = re.search(r"^\s*" + re.escape(key) + r"\s+([^;\n]*);", fh.read(), flags=re.M)
+        m = _entry(key).search(fh.read())
     if m is None:
         raise CaseError(f"{path}: no entry '{key}'")
-    return m.group(1).strip()
+    return m.group(2).strip()
 
 
 def set_entry(path, key, value):
     """Set the top-level entry `key value;` of a dictionary file (it must exist)."""
     with open(path) as fh:
         text = fh.read()
-    new, n = re.subn(r"^(\s*" + re.escape(key) + r"\s+)[^;\n]*;", lambda m: f"{m.group(1)}{value};",
-                     text, count=1, flags=re.M)
+    new, n = _entry(key).subn(lambda m: f"{m.group(1)}{value};", text, count=1)
     if n != 1:
         raise CaseError(f"{path}: no entry '{key}' to set")
     with open(path, "w") as fh:
