@@ -3,6 +3,8 @@ twoPhaseEulerFoam with granair's muI frictional stress and granair drag
 against closed forms. SI units. The template (template/) prints them through
 the placeholders named as here."""
 import math
+import os
+import re
 
 from granair_cases import closed_forms as cf
 
@@ -90,6 +92,38 @@ CONSOL = dict(D=30e-6, RHO_P=2500.0, H=0.06, NZ=120, BED_H=0.05, ALPHA0=0.55,
 CONSOL_FRICTION = dict(mu_s=1e-4, mu_2=2e-4, i0=0.279, phi_max=0.64, phi_min=0.55, eta_max=1e5)
 CONSOL_TV = (0.05, 0.1, 0.2, 0.4, 0.8)   # time factors T_v = c_v t / H^2 compared
 TOL_TERZAGHI = 0.05                      # of the initial excess pressure at the base
+
+
+# --- 5: a powder column at rest with the Latz-Schmidt frictional stress
+# (frictionalStressModel latzSchmidt): the lactose of reference case A (its
+# closure and density, the block granairContinuumFoam reads) settles from a
+# uniform 0.566 under its own weight in air; at rest the packing in each cell
+# must carry the buoyant weight above it through the closure's yield pressure
+# p_y(c) = T0 (c - c0)/(1 - c/cMax) (gc.closed_forms.latz_yield_pressure).
+# alphaMinFriction 0.555 (below c0: the kinetic part of the closure acts from
+# there), the packing cap 5e-4 below cMax (as the wedge silo's runs), alphaMax
+# of the kinetic theory's radial function 0.60 (above the closure's cMax).
+PACKING = dict(D=225e-6, RHO_P=1060.0, H=0.06, NZ=60, BED_H=0.05, ALPHA0=0.566,
+               ALPHA_MAX=0.60, ALPHA_MIN_FRICTION=0.555, ALPHA_DELTA_MIN=5e-4, FRICTION_MODEL="latzSchmidt",
+               DRAG_LAW="ErgunGidaspow", DT=1e-4, MAX_CO=0.2, N_OUTER=3, FACE_MOMENTUM="no",
+               U_S=0.0, T_END=2.0, T_WRITE=0.25)
+LATZ_BLOCK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "wedge-silo", "continuum",
+                          "latzSchmidt", "rheology")
+PACKING_DEEP = 0.1       # cells compared: overburden >= this share of the base's (not the surface's transition)
+TOL_PACKING = 0.05       # p_y at the cell's packing vs its buoyant overburden
+
+
+def latz_block():
+    """(the Latz-Schmidt rheology block's text, its c0, cMax, T0, rhoP)."""
+    with open(LATZ_BLOCK) as fh:
+        text = fh.read()
+    keys = {}
+    for k in ("c0", "cMax", "T0", "rhoP"):
+        m = re.search(r"^\s*" + k + r"\s+([-+0-9.eE]+)\s*;", text, re.M)
+        if not m:
+            raise ValueError(f"{LATZ_BLOCK}: no {k} entry")
+        keys[k] = float(m.group(1))
+    return text, keys
 
 
 def rheology(p, friction):

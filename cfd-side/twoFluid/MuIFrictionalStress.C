@@ -3,11 +3,10 @@
 \*---------------------------------------------------------------------------*/
 #include "MuIFrictionalStress.H"
 
+#include "FrictionalFields.H"
 #include "GranairDictionary.H"
 #include "core/Error.hpp"
 #include "addToRunTimeSelectionTable.H"
-#include "fvcGrad.H"
-#include "calculatedFvPatchFields.H"
 
 namespace Foam
 {
@@ -134,13 +133,6 @@ void muI::checkPhase(const phaseModel& phase) const
 }
 
 
-Foam::tmp<Foam::volScalarField> muI::shearRate(const phaseModel& phase) const
-{
-    const volSymmTensorField D(dev(symm(fvc::grad(phase.U()))));
-    return sqrt(2.0*(D && D));
-}
-
-
 namespace
 {
 PressureLaw makeLaw
@@ -159,40 +151,6 @@ PressureLaw makeLaw
     };
 }
 
-template<class Op>
-Foam::tmp<Foam::volScalarField> cellwise
-(
-    const Foam::word& name, const Foam::phaseModel& phase, const Foam::volScalarField& gammaDot,
-    const Foam::dimensionSet& dims, Op op
-)
-{
-    using namespace Foam;
-    const volScalarField& alpha = phase;
-    tmp<volScalarField> tf
-    (
-        new volScalarField
-        (
-            IOobject(name, phase.mesh().time().timeName(), phase.mesh(),
-                     IOobject::NO_READ, IOobject::NO_WRITE, false),
-            phase.mesh(),
-            dimensionedScalar(dims, Zero)
-        )
-    );
-    volScalarField& f = tf.ref();
-    forAll(f, i)
-    {
-        f[i] = op(alpha[i], gammaDot[i]);
-    }
-    forAll(f.boundaryField(), patchi)
-    {
-        fvPatchScalarField& fp = f.boundaryFieldRef()[patchi];
-        forAll(fp, facei)
-        {
-            fp[facei] = op(alpha.boundaryField()[patchi][facei], gammaDot.boundaryField()[patchi][facei]);
-        }
-    }
-    return tf;
-}
 } // namespace
 
 
@@ -206,16 +164,16 @@ Foam::tmp<Foam::volScalarField> muI::pressure
 {
     checkPhase(phase);
     const PressureLaw law = makeLaw(Fr_, eta_, p_, alphaDeltaMin_, shearInduced_, alphaMinFriction, alphaMax, *rheology_);
-    const tmp<volScalarField> tg = shearRate(phase);
+    const tmp<volScalarField> tg = granairTwoFluid::shearRate(phase.U());
     if (prime)
     {
-        return cellwise
+        return granairTwoFluid::pointwise
         (
             "muI:pfPrime", phase, tg(), dimPressure,
             [&law](double a, double g) { return law.contactPrime(a) + law.shearInducedPrime(a, g); }
         );
     }
-    return cellwise
+    return granairTwoFluid::pointwise
     (
         "muI:pf", phase, tg(), dimPressure,
         [&law](double a, double g) { return law.contact(a) + law.shearInduced(a, g); }
@@ -264,75 +222,17 @@ Foam::tmp<Foam::volScalarField> muI::nu
         const double p = pfOverRho*rhoP;
         return p > 0 ? rheology_->viscosity(p, g)/rhoP : 0.0;
     };
-    tmp<volScalarField> tnu
-    (
-        new volScalarField
-        (
-            IOobject("muI:nu", phase.mesh().time().timeName(), phase.mesh(),
-                     IOobject::NO_READ, IOobject::NO_WRITE, false),
-            phase.mesh(),
-            dimensionedScalar(dimViscosity, Zero)
-        )
-    );
-    volScalarField& nuf = tnu.ref();
     try
     {
-        forAll(nuf, i)
-        {
-            nuf[i] = op(pf[i], gammaDot[i]);
-        }
-        forAll(nuf.boundaryField(), patchi)
-        {
-            if (nuf.boundaryField()[patchi].coupled()) continue;
-            fvPatchScalarField& np = nuf.boundaryFieldRef()[patchi];
-            forAll(np, facei)
-            {
-                np[facei] = op(pf.boundaryField()[patchi][facei], gammaDot.boundaryField()[patchi][facei]);
-            }
-        }
+        tmp<volScalarField> tnu = granairTwoFluid::pointwise("muI:nu", pf, gammaDot, dimViscosity, op);
+        granairTwoFluid::publish(phase, rhoP, pf, tnu());
+        return tnu;
     }
     catch (const ::granair::Error& e)
     {
         FatalErrorInFunction << "frictionalStressModel muI: " << e.what() << exit(FatalError);
     }
-    nuf.correctBoundaryConditions();
-    publish(phase, pf, nuf);
-    return tnu;
-}
-
-
-void muI::publish(const phaseModel& phase, const volScalarField& pfOverRho, const volScalarField& nuf) const
-{
-    const scalar rhoP = rheology_->parameters().rhoP;
-    const fvMesh& mesh = phase.mesh();
-    const word pName(IOobject::groupName("pf", phase.name()));
-    const word muName(IOobject::groupName("muFriction", phase.name()));
-    for (const word& name : {pName, muName})
-    {
-        if (!mesh.foundObject<volScalarField>(name))
-        {
-            const dimensionSet dims = name == pName ? dimPressure : dimPressure*dimTime;
-            mesh.objectRegistry::store
-            (
-                new volScalarField
-                (
-                    IOobject(name, mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
-                    mesh,
-                    dimensionedScalar(dims, Zero),
-                    calculatedFvPatchScalarField::typeName
-                )
-            );
-        }
-    }
-    volScalarField& pfField = mesh.lookupObjectRef<volScalarField>(pName);
-    volScalarField& muField = mesh.lookupObjectRef<volScalarField>(muName);
-    pfField.primitiveFieldRef() = rhoP*pfOverRho.primitiveField();
-    muField.primitiveFieldRef() = rhoP*nuf.primitiveField();
-    forAll(pfField.boundaryField(), patchi)
-    {
-        pfField.boundaryFieldRef()[patchi] == rhoP*pfOverRho.boundaryField()[patchi];
-        muField.boundaryFieldRef()[patchi] == rhoP*nuf.boundaryField()[patchi];
-    }
+    return tmp<volScalarField>(nullptr);
 }
 
 

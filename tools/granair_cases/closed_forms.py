@@ -112,3 +112,18 @@ def janssen(depth, D, rho_b, mu_w, K, g=G):
     z0 = D / (4.0 * mu_w * K)
     p_v = rho_b * g * z0 * (1.0 - np.exp(-np.asarray(depth, dtype=float) / z0))
     return p_v, K * p_v
+
+
+def latz_yield_pressure(c, c0, c_max, t0):
+    """The Latz-Schmidt closure's yield pressure per particle density at rest
+    (T -> 0, coupling/rheology/LatzSchmidt.hpp): p_y = T0 (c - c0)/(1 - c/cMax)
+    for c0 < c < cMax, 0 at or below c0 [m2/s2]."""
+    if not c < c_max:
+        raise ValueError(f"latz_yield_pressure: c = {c} at or above cMax = {c_max}")
+    return t0 * (c - c0) / (1 - c / c_max) if c > c0 else 0.0
+
+
+def latz_yield_packing(q, c0, c_max, t0):
+    """Its inverse: the packing c0 <= c < cMax at which p_y = q >= 0 [m2/s2];
+    p_y (1 - c/cMax) = T0 (c - c0) is linear in c: c = (q + T0 c0)/(T0 + q/cMax)."""
+    return (q + t0 * c0) / (t0 + q / c_max) if q > 0 else c0

@@ -9,6 +9,7 @@ and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-flui
     ends, means = block_means(t, dt, [w, dpdz, alpha], block)     their means over blocks of time
     out_by(run_dir, fill_g, share)                               when that share of the fill had left
     closure(phi_fill)                                            the frictional closure's numbers
+    friction(values)                                             its entry in turbulenceProperties.particles
 
 A case writes system/blockMeshDict (its blocks of orthogonal cells) and
 system/topoSetDict (a cellSet `silo` of the cells inside its hopper); the first
@@ -64,6 +65,35 @@ def closure(phi_fill):
     docs/two-fluid-model.md "On a silo")."""
     return dict(ALPHA_MIN_FRICTION=phi_fill - 0.01, ALPHA_MAX=phi_fill + 0.04, FR=0.05, FR_ETA=2, FR_P=5,
                 ALPHA_DELTA_MIN=0.005, SHEAR_PRESSURE="on", FACE_MOMENTUM="no", N_OUTER=1, DRAG_SCALE=1)
+
+
+# The frictional-stress models of libgranairTwoFluid.so (cfd-side/twoFluid) by
+# the name a case selects (FRICTION_MODEL, default muI) -> the comment and the
+# coefficients after the rheology block, as @KEY:spec@ text of values.
+FRICTION = {
+    "muI": ("granair: mu(I) shear stress and a contact pressure >= 0, zero below\n"
+            "        // alphaMinFriction (cfd-side/twoFluid/MuIFrictionalStress.H).",
+            "            Fr              @FR:.8g@;\n"
+            "            eta             @FR_ETA:.6g@;\n"
+            "            p               @FR_P:.6g@;\n"
+            "            alphaDeltaMin   @ALPHA_DELTA_MIN:.6g@;\n"
+            "            shearInducedPressure @SHEAR_PRESSURE@;"),
+    "latzSchmidt": ("granair: Latz-Schmidt at local equilibrium of its granular temperature,\n"
+                    "        // its yield pressure zero below c0 (cfd-side/twoFluid/LatzSchmidtFrictionalStress.H).",
+                    "            alphaDeltaMin   @ALPHA_DELTA_MIN:.6g@;"),
+}
+
+
+def friction(values, where="two-fluid template"):
+    """The frictionalStressModel entry of turbulenceProperties.particles (the
+    template's @FRICTION@): the model values["FRICTION_MODEL"] (default muI), its
+    coefficients with values["RHEOLOGY"] (the rheology block) first."""
+    model = values.get("FRICTION_MODEL", "muI")
+    if model not in FRICTION:
+        raise CaseError(f"{where}: frictional stress model '{model}' is not one of {sorted(FRICTION)}")
+    comment, coeffs = FRICTION[model]
+    return template.fill(f"        // {comment}\n        frictionalStressModel   {model};\n        {model}Coeffs\n"
+                         f"        {{\n@RHEOLOGY@\n{coeffs}\n        }}", values, where)
 
 
 def check_p_i_option(ap, option):
@@ -230,7 +260,7 @@ def setup(run_dir, template_dir, values, write_mesh, resume=False):
         template.check_values(path, keep, "rerun without --resume to start again")
         return
     runner.clean(run_dir)
-    template.render(template_dir, run_dir, values)
+    template.render(template_dir, run_dir, {**values, "FRICTION": friction(values, template_dir)})
     write_mesh(run_dir)
     template.save_values(path, keep)
 

@@ -78,6 +78,20 @@ class ClosedForms(unittest.TestCase):
         self.assertAlmostEqual(float(near) / (0.5 * 760 * 9.81 * 1e-4), 1.0, delta=1e-3)
         self.assertEqual(cf.janssen([0.1, 0.2], 0.15, 760.0, 0.52, 0.5)[1].shape, (2,))
 
+    def test_latz_yield(self):
+        # the lactose closure (cases/wedge-silo/continuum/latzSchmidt/rheology): c0 0.5579,
+        # cMax 0.5771, T0 0.41; at c = 0.5675, 1 - c/cMax = 0.016635, p_y = 0.41 x 0.0096 / 0.016635
+        c0, cm, t0 = 0.5579, 0.5771, 0.41
+        self.assertAlmostEqual(cf.latz_yield_pressure(0.5675, c0, cm, t0), 0.23661, delta=1e-5)
+        self.assertEqual(cf.latz_yield_pressure(0.55, c0, cm, t0), 0.0)
+        for q in (1e-3, 0.28, 2.1, 50.0):     # the inverse, over the silo's range and beyond
+            c = cf.latz_yield_packing(q, c0, cm, t0)
+            self.assertTrue(c0 < c < cm)
+            self.assertAlmostEqual(cf.latz_yield_pressure(c, c0, cm, t0) / q, 1.0, delta=1e-12)
+        self.assertEqual(cf.latz_yield_packing(0.0, c0, cm, t0), c0)
+        with self.assertRaises(ValueError):
+            cf.latz_yield_pressure(cm, c0, cm, t0)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

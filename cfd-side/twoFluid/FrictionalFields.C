@@ -1,0 +1,55 @@
+/*---------------------------------------------------------------------------*\
+    granair: see FrictionalFields.H
+\*---------------------------------------------------------------------------*/
+#include "FrictionalFields.H"
+
+#include "calculatedFvPatchFields.H"
+#include "fvcGrad.H"
+
+Foam::tmp<Foam::volScalarField> Foam::granairTwoFluid::shearRate(const Foam::volVectorField& U)
+{
+    using namespace Foam;
+    const volSymmTensorField D(dev(symm(fvc::grad(U))));
+    return sqrt(2.0*(D && D));
+}
+
+
+void Foam::granairTwoFluid::publish
+(
+    const Foam::phaseModel& phase,
+    const Foam::scalar rhoP,
+    const Foam::volScalarField& pfOverRho,
+    const Foam::volScalarField& nuf
+)
+{
+    using namespace Foam;
+    const fvMesh& mesh = phase.mesh();
+    const word pName(IOobject::groupName("pf", phase.name()));
+    const word muName(IOobject::groupName("muFriction", phase.name()));
+    for (const word& name : {pName, muName})
+    {
+        if (!mesh.foundObject<volScalarField>(name))
+        {
+            const dimensionSet dims = name == pName ? dimPressure : dimPressure*dimTime;
+            mesh.objectRegistry::store
+            (
+                new volScalarField
+                (
+                    IOobject(name, mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+                    mesh,
+                    dimensionedScalar(dims, Zero),
+                    calculatedFvPatchScalarField::typeName
+                )
+            );
+        }
+    }
+    volScalarField& pfField = mesh.lookupObjectRef<volScalarField>(pName);
+    volScalarField& muField = mesh.lookupObjectRef<volScalarField>(muName);
+    pfField.primitiveFieldRef() = rhoP*pfOverRho.primitiveField();
+    muField.primitiveFieldRef() = rhoP*nuf.primitiveField();
+    forAll(pfField.boundaryField(), patchi)
+    {
+        pfField.boundaryFieldRef()[patchi] == rhoP*pfOverRho.boundaryField()[patchi];
+        muField.boundaryFieldRef()[patchi] == rhoP*nuf.boundaryField()[patchi];
+    }
+}
