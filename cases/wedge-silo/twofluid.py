@@ -13,7 +13,7 @@ One slot width.
     twofluid.py [--b MM ...] [--air on|off|both] [--end T] [--chunk T] [--resume] [--past-half] [--mesh N]
                 [--until F] [--fills demo|study]
                 [--dry viscosity|drag] [--outer-until T] [--rheology-from literature|calibration]
-                [--dem-size demo|study]
+                [--dem-size demo|study] [--rheology-d D] [--rheology muI|latzSchmidt]
                 [--air-mu-factor F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
                 [--out DIR] [--setup-only]
 
@@ -53,6 +53,7 @@ import parameters as P
 HERE = os.path.dirname(os.path.abspath(__file__))
 T = os.path.join(HERE, "two-fluid", "template")
 SERIES_BLOCK = 1e-3     # [s] timeseries.csv's block means
+LATZ_ALPHA_DELTA_MIN = 5e-4    # latzSchmidt's packing cap below cMax (numbers())
 
 
 def numbers(a, b_mm, air):
@@ -62,7 +63,8 @@ def numbers(a, b_mm, air):
     c.mesh, c.end, c.write_every, c.fills = a.mesh, a.end, a.chunk, a.fills
     # --rheology-from calibration: the continuum's DEM-calibrated mu(I) block, its
     # d the --dem-size run's parcels, the bulk density the calibrated packing
-    c.rheology_from, c.dem_size = a.rheology_from, a.dem_size
+    c.rheology_from, c.dem_size, c.rheology_d = a.rheology_from, a.dem_size, a.rheology_d
+    c.rheology = a.rheology
     v = continuum.numbers(c, b_mm, air)
     phi = v["RHO_B"] / P.RHO_P
     dx = b_mm * 1e-3 / a.mesh
@@ -73,7 +75,8 @@ def numbers(a, b_mm, air):
     # the phase's diameter is the rheology block's d as written there (muI
     # checks it: the DEM's parcels with the calibration); the drag sees the
     # primary particles
-    v.update(D=gc.calibration.entry(v["RHEOLOGY"], "d"), D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81, DRAG_SCALE=drag_scale, DRY=a.dry,
+    latz = a.rheology == "latzSchmidt"
+    v.update(D=P.D_LACTOSE if latz else gc.calibration.entry(v["RHEOLOGY"], "d"), D_DRAG=P.D_LACTOSE, RHO_P=P.RHO_P, G=9.81, DRAG_SCALE=drag_scale, DRY=a.dry,
              RHO_F=P.AIR_RHO, MU=P.AIR_MU * mu_factor, AIR_EOS="rhoConst",
              DRAG_LAW="ErgunGidaspow", PHI_FILL=phi, SHEAR_PRESSURE=a.shear_pressure,
              # the dp/dz probes at the cell centres beside the slot plane: a probe
@@ -85,6 +88,13 @@ def numbers(a, b_mm, air):
              # (equal cells, so their mean is the row's mean)
              SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dx - v['B']:.9g} {P.DEPTH / 2:.6g} {dx / 2:.9g})"
                                       for i in range(a.mesh)))
+    if latz:
+        # the frictional model latzSchmidt (its block has no d: the phase's is the
+        # primary's); its packing cap cMax - alphaDeltaMin must hold the silo's
+        # base: p_y = 2.2 kPa there is reached at c = 0.5751, and the cap at
+        # cMax - 0.0005 = 0.5766 carries 9.4 kPa (the muI contact law's 0.005
+        # would cap it at 0.5721, 0.7 kPa)
+        v.update(FRICTION_MODEL="latzSchmidt", ALPHA_DELTA_MIN=LATZ_ALPHA_DELTA_MIN, SHEAR_PRESSURE="off")
     v["ORIFICE_PROBES"] = " ".join(f"(0 {P.DEPTH / 2:.6g} {z:.9g})" for z in (v["PROBE_Z"], -v["PROBE_Z"]))
     if a.shear_pressure_phi_max is not None:
         # p_I's packing at I = 0 (MuIFrictionalStress: the rheology block's phiMax is
@@ -182,16 +192,16 @@ def post(run, out, name, v, wall=None):
     air = bool(v["AIR"])
     if wall is None:    # from the solver logs (start-up and main run)
         wall = gc.two_fluid.wall_seconds(run)
+    latz = v.get("FRICTION_MODEL") == "latzSchmidt"
+    law = ("Latz-Schmidt at local equilibrium (tan phi 0.416)" if latz else
+           f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}muI (mu_s {v['MU_S']:.3f})")
+    pressure = ("" if latz else f"shear-induced pressure (phiMax {v['PHI_MAX']:.4g}), " if v["SHEAR_PRESSURE"] == "on"
+                else "contact pressure only, ")
+    air_text = (("air" if v["AIR_MU_FACTOR"] == 1 else f"air at {v['AIR_MU_FACTOR']:g}x viscosity (diagnostic)")
+                if air else {"viscosity": "air at 1/100 viscosity (dry)", "drag": "drag x 1/100 (dry)"}[v["DRY"]])
     gc.levels.write(os.path.join(out, "level.json"), case="wedge-silo", level="two-fluid",
-                    model=(f"two-fluid twoPhaseEulerFoam + granair "
-                           f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}muI "
-                           f"(mu_s {v['MU_S']:.3f}) and ErgunGidaspow, "
-                           f"Coulomb walls, staircase mesh b/{v['N']}, "
-                           + (f"shear-induced pressure (phiMax {v['PHI_MAX']:.4g}), " if v["SHEAR_PRESSURE"] == "on"
-                              else "contact pressure only, ")
-                           + (("air" if v["AIR_MU_FACTOR"] == 1 else f"air at {v['AIR_MU_FACTOR']:g}x viscosity (diagnostic)")
-                              if air else {"viscosity": "air at 1/100 viscosity (dry)",
-                                           "drag": "drag x 1/100 (dry)"}[v["DRY"]])),
+                    model=(f"two-fluid twoPhaseEulerFoam + granair {law} and ErgunGidaspow, Coulomb walls, "
+                           f"staircase mesh b/{v['N']}, {pressure}{air_text}"),
                     b_mm=v["B_MM"], air=air, steady_mass_flow_kg_s=W, steady_window_s=[t0, t1],
                     outlet_dpdz_Pa_m=G if air else None, wall_time_s=wall, cores=1, timeseries="timeseries.csv")
     print(f"wedge-silo two-fluid {name}: W = {W:.4g} kg/s, outlet dp/dz {G:.4g} Pa/m, slot row alpha {A:.3f} "
@@ -264,14 +274,25 @@ def main():
     ap.add_argument("--outer-until", type=float, default=0.0, metavar="T",
                     help="three outer correctors per step until T s, then the template's one (default 0: one "
                          "throughout); for the start's transient on fine meshes without air")
+    ap.add_argument("--rheology", choices=["muI", "latzSchmidt"], default="muI",
+                    help="the frictional stress: muI (default) or latzSchmidt, the lactose closure of the source "
+                         "paper at local equilibrium of its granular temperature (continuum.py --rheology)")
     ap.add_argument("--rheology-from", choices=["literature", "calibration"], default="literature",
                     help="the mu(I) block: the literature's (default) or the DEM calibration of the DEM's parcels "
                          "(continuum.py --rheology-from, with its bulk density)")
     ap.add_argument("--dem-size", choices=sorted(P.SIZES), default="demo",
                     help="with the calibration: the DEM run whose parcel d goes in I (default demo; continuum.py)")
+    ap.add_argument("--rheology-d", type=float, default=None,
+                    help="with the calibration: the grain diameter of I and of the particle phase [m] instead of "
+                         "the DEM parcel's (diagnostic, continuum.py --rheology-d)")
     ap.add_argument("--air-mu-factor", type=float, default=1.0,
                     help="diagnostic: the air run's air viscosity in units of the real one (default 1)")
     a = gc.cli.parse(ap, os.path.join(HERE, "two-fluid-results"))
+    if a.rheology_d is not None and not (a.rheology_d > 0 and a.rheology_from == "calibration"):
+        ap.error(f"--rheology-d {a.rheology_d:g}: expected a diameter > 0 [m], with --rheology-from calibration")
+    if a.rheology == "latzSchmidt" and (a.rheology_from != "literature" or a.shear_pressure_phi_max is not None):
+        ap.error("--rheology latzSchmidt: the closure is the source paper's (no --rheology-from calibration) "
+                 "and has no shear-induced pressure of muI (no --shear-pressure-phi-max)")
     if not (a.chunk > 0 and a.end > 0):
         ap.error(f"--chunk {a.chunk:g} / --end {a.end:g}: expected times > 0 [s]")
     if not a.outer_until >= 0:
