@@ -3,7 +3,7 @@
 (cases/wedge-silo), as ratios measured in one run.
 
     bench/wedge/run.py [--size demo|study] [--b 10] [--np 1] [--t-end 0.3] [--repeat 2]
-                       [--configs noair forces-off air] [--full-depth] [--work DIR] [--name NAME]
+                       [--configs noair forces-off air] [--full-depth] [--cfd-dt DT] [--work DIR] [--name NAME]
 
 One fill (study.py --stage fill, kept in WORK and reused), then the
 discharge from it --repeat times in each configuration, the configurations
@@ -20,6 +20,10 @@ buffers; into bench/results/NAME.{md,csv} (default wedge-<size>-np<np>).
 --full-depth: the silo's whole 60 mm depth between walls instead of the
 periodic slice (study.py --full-depth: about 12x the parcels, a 3-D air mesh
 11 cells deep; default name wedge-<size>-full-depth-np<np>).
+
+--cfd-dt: the air's (coupling) time step of the runs (study.py --cfd-dt);
+the case's 5e-4 s is ~26 DEM steps, 1e-3 s the guide's coupling interval
+of ~50 at which its speed targets are stated. The report gives the interval.
 
 --contacts adds one untimed run of `noair` and `air` whose LIGGGHTS script
 also sums `compute contact/atom` (printed with thermo at every coupling
@@ -64,7 +68,19 @@ def prepare(a):
     if not os.path.exists(fill):
         print(f"bench/wedge: fill at size {a.size}, b = {a.b} mm", flush=True)
         study(a, "--stage", "fill")
-    study(a, "--stage", "runs", "--setup-only", "--t-end", str(a.t_end))
+    # the fill is the same at every air step (a DEM-only settling); --cfd-dt sets the runs'
+    study(a, "--stage", "runs", "--setup-only", "--t-end", str(a.t_end),
+          *(["--cfd-dt", f"{a.cfd_dt:g}"] if a.cfd_dt else []))
+
+
+def coupling_interval(a):
+    """The DEM steps per air step of the prepared air run (its couplingProperties)."""
+    path = os.path.join(a.work, "runs", f"b{a.b}", "air", "constant", "couplingProperties")
+    with open(path) as fh:
+        for line in fh:
+            if line.split()[:1] == ["couplingInterval"]:
+                return int(line.split()[1].rstrip(";"))
+    raise gc.CaseError(f"{path}: no couplingInterval entry (expected the case template's)")
 
 
 def run_one(a, config, repeat, contacts=False):
@@ -136,7 +152,7 @@ def report(a, runs, load, counts):
         "",
         f"Written by `bench/wedge/run.py --size {a.size} --b {a.b} --np {a.np} --t-end {a.t_end:g} --repeat {a.repeat}"
         f"{' --configs ' + ' '.join(a.configs) if list(a.configs) != list(CONFIGS) else ''}"
-        f"{' --full-depth' if a.full_depth else ''}` "
+        f"{' --full-depth' if a.full_depth else ''}{f' --cfd-dt {a.cfd_dt:g}' if a.cfd_dt else ''}` "
         "(see its docstring and bench/README.md): one settled fill, then the first "
         f"{a.t_end:g} s of the discharge in each configuration, the fastest of {a.repeat} repeat(s) shown (slowest in "
         "brackets). `forces-off` is the air run with `forces { applied off; }`: every part of the coupling computed "
@@ -196,6 +212,9 @@ def main():
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--t-end", type=float, default=0.3, help="discharge time of each run [s]")
     ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--cfd-dt", type=float, default=None,
+                    help="the air's (coupling) step [s]: default the case's 5e-4 (interval ~26); 1e-3 gives the "
+                         "guide's interval of ~50 (study.py --cfd-dt)")
     ap.add_argument("--configs", nargs="+", default=list(CONFIGS), choices=CONFIGS)
     ap.add_argument("--work", default=None, help="work folder (default build/bench-wedge-<size>[-full-depth])")
     ap.add_argument("--contacts", action="store_true", help="also count the contacts (untimed runs)")
@@ -207,10 +226,13 @@ def main():
     build = os.environ.get("GRANAIR_BUILD", os.path.join(ROOT, "build"))
     depth = "-full-depth" if a.full_depth else ""
     a.work = os.path.abspath(a.work or os.path.join(build, f"bench-wedge-{a.size}{depth}"))
-    a.name = a.name or f"wedge-{a.size}{depth}-np{a.np}"
+    if a.cfd_dt is not None and not a.cfd_dt > 0:
+        ap.error(f"--cfd-dt {a.cfd_dt:g}: expected the air's time step > 0 [s]")
+    a.name = a.name or f"wedge-{a.size}{depth}-np{a.np}" + (f"-cfd-dt{a.cfd_dt:g}" if a.cfd_dt else "")
     load = f"{time.strftime('%Y-%m-%dT%H:%MZ', time.gmtime())}, {os.cpu_count()} cores, load average at start " \
            f"{' '.join(open('/proc/loadavg').read().split()[:3])}"
     prepare(a)
+    load += f"; coupling interval {coupling_interval(a)} DEM steps per air step"
     runs = {c: [] for c in a.configs}
     for k in range(1, a.repeat + 1):
         for c in a.configs:

@@ -5,7 +5,7 @@ restart, with air (granairFoam) and without (DEM only); then the results
 tables, field pictures and VTK files, the study plots and the checks.
 
     study.py [--size demo|study] [--b 5 10 15] [--runs air noair] [--out DIR] [--jobs 2] [--np 1]
-             [--t-end T] [--write-interval T] [--s S] [--youngs E] [--cohesion matched|raw|off]
+             [--t-end T] [--write-interval T] [--cfd-dt DT] [--s S] [--youngs E] [--cohesion matched|raw|off]
              [--rolling MU_R [--rolling-model epsd2|cdt]]
              [--fill-height H] [--cg-every T] [--whole [--chunk T]] [--pack DIR] [--stage all|fill|runs|post]
              [--full-depth] [--setup-only] [--check]
@@ -75,11 +75,15 @@ def numbers(a, b_mm, air):
     youngs = a.youngs if a.youngs is not None else cfg["youngs"]
     k_coh = {"matched": P.K_COH_REAL * (youngs / P.E_REAL) ** (2.0 / 3.0), "raw": P.K_COH_REAL, "off": 0.0}[a.cohesion]
     t_r = gc.dem.rayleigh_time(s * P.D_MIN_PSD / 2, youngs, P.NU, P.RHO_P)
-    interval, dem_dt = gc.dem.time_steps(cfg["cfd_dt"], t_r, cfg["rayleigh_fraction"])
+    # the air's step (the coupling step); --cfd-dt: a coupling-interval study or the
+    # benchmark at the guide's interval of 50 (bench/wedge/run.py --cfd-dt)
+    cfd_dt = a.cfd_dt if a.cfd_dt is not None else cfg["cfd_dt"]
+    interval, dem_dt = gc.dem.time_steps(cfd_dt, t_r, cfg["rayleigh_fraction"])
     t_end = a.t_end if a.t_end is not None else P.WHOLE_T_MAX if a.whole else cfg["t_end"]
     every = a.write_interval if a.write_interval is not None else cfg["write_interval"]
-    if abs(round(t_end / cfg["cfd_dt"]) * cfg["cfd_dt"] - t_end) > 1e-9:
-        raise gc.CaseError(f"discharge time {t_end} s is not a whole number of CFD steps ({cfg['cfd_dt']} s)")
+    for name, span in (("discharge time", t_end), ("field interval", every)):
+        if abs(round(span / cfd_dt) * cfd_dt - span) > 1e-9:
+            raise gc.CaseError(f"{name} {span:g} s is not a whole number of CFD steps ({cfd_dt:g} s)")
     h = P.KERNEL_WIDTHS * d         # cells near the orifice and the kernel width: 1.6 parcel diameters
     nz_h = max(4, round(hh / h))
     z_above = max(1, min(nz_h - 1, round(b / (hh / nz_h)))) * hh / nz_h    # a face layer about b above
@@ -94,8 +98,8 @@ def numbers(a, b_mm, air):
                 NX_SIDE=max(2, round((P.WIDTH - b) / 2 / (2 * h))), NZ_BELOW=max(4, round(P.BOX_BELOW / h)),
                 NZ_HOPPER=nz_h, NZ_SHAFT=max(10, round(P.SHAFT_HEIGHT / max(2 * h, 0.004))), S=s, D_PRIMARY=d_mean,
                 D_PARCEL=d, DEPTH_SCALE=P.DEPTH / slice_, FILL_HEIGHT=fill, T_END=t_end, WRITE_INTERVAL=every,
-                CFD_DT=cfg["cfd_dt"], DEM_DT=dem_dt, COUPLING_INTERVAL=interval, RAYLEIGH_S=t_r,
-                WRITE_EVERY=round(every / cfg["cfd_dt"]), SNAP=round(every / dem_dt), NP=a.np,
+                CFD_DT=cfd_dt, DEM_DT=dem_dt, COUPLING_INTERVAL=interval, RAYLEIGH_S=t_r,
+                WRITE_EVERY=round(every / cfd_dt), SNAP=round(every / dem_dt), NP=a.np,
                 AIR="on" if air else "off", KERNEL_WIDTH=h, OUTLET_X=b / 2 + 1e-6, ABOVE_Z=z_above,
                 ABOVE_X=b / 2 + z_above * math.tan(theta) + 1e-6, ABOVE_Z_LO=z_above - 1e-4,
                 ABOVE_Z_HI=z_above + 1e-4, SKIN=0.3 * d, YOUNGS=youngs, MU_W=P.WALL_FRICTION,
@@ -592,6 +596,8 @@ def main():
     ap.add_argument("--s", type=float, default=None, help="coarse-graining factor for every b")
     ap.add_argument("--t-end", type=float, default=None, help="discharge time [s]")
     ap.add_argument("--write-interval", type=float, default=None, help="field interval [s] (demo 0.25, study 1)")
+    ap.add_argument("--cfd-dt", type=float, default=None,
+                    help="the air's (coupling) time step [s] (default the size's, 5e-4 s: coupling interval ~26)")
     ap.add_argument("--youngs", type=float, default=None, help="Young's modulus used [Pa]")
     ap.add_argument("--cohesion", default="matched", choices=["matched", "raw", "off"])
     ap.add_argument("--rolling", type=float, default=0.0, metavar="MU_R",
@@ -615,6 +621,8 @@ def main():
     ap.add_argument("--stage", default="all", choices=["all", "fill", "runs", "post"],
                     help="fill: the fills only; runs: the runs from existing fills, then post; post: post only")
     a = gc.cli.parse(ap, os.path.join(HERE, "run"))
+    if a.cfd_dt is not None and not (a.cfd_dt > 0 and math.isfinite(a.cfd_dt)):
+        ap.error(f"--cfd-dt {a.cfd_dt:g}: expected the air's time step > 0 [s]")
     a.pack = a.pack and os.path.abspath(a.pack)
     work, res = os.path.join(a.out, "runs"), os.path.join(a.out, "results")
     os.makedirs(work, exist_ok=True)
