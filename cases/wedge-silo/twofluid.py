@@ -194,7 +194,8 @@ def post(run, out, name, v, wall=None):
         wall = gc.two_fluid.wall_seconds(run)
     latz = v.get("FRICTION_MODEL") == "latzSchmidt"
     law = ("Latz-Schmidt at local equilibrium (tan phi 0.416)" if latz else
-           f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}muI (mu_s {v['MU_S']:.3f})")
+           f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}muI (mu_s {v['MU_S']:.3f}"
+           + (f", d = {v['D'] * 1e3:.3g} mm in I" if v["RHEOLOGY_FROM"] == "calibration" else "") + ")")
     pressure = ("" if latz else f"shear-induced pressure (phiMax {v['PHI_MAX']:.4g}), " if v["SHEAR_PRESSURE"] == "on"
                 else "contact pressure only, ")
     air_text = (("air" if v["AIR_MU_FACTOR"] == 1 else f"air at {v['AIR_MU_FACTOR']:g}x viscosity (diagnostic)")
