@@ -6,11 +6,16 @@
 #include "calculatedFvPatchFields.H"
 #include "fvcGrad.H"
 
+Foam::tmp<Foam::volScalarField> Foam::granairTwoFluid::shearRate(const Foam::volSymmTensorField& D)
+{
+    const volSymmTensorField devD(dev(D));
+    return sqrt(2.0*(devD && devD));
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::granairTwoFluid::shearRate(const Foam::volVectorField& U)
 {
-    using namespace Foam;
-    const volSymmTensorField D(dev(symm(fvc::grad(U))));
-    return sqrt(2.0*(D && D));
+    return shearRate(volSymmTensorField(symm(fvc::grad(U))));
 }
 
 

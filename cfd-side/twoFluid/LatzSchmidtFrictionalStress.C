@@ -134,14 +134,14 @@ Foam::tmp<Foam::volScalarField> latzSchmidt::field
 (
     const word& name,
     const phaseModel& phase,
-    const dimensionSet& dims,
+    const scalar cMin,
     Law law
 ) const
 {
-    if (!(cMin_ < cap()))
+    if (!(cMin < cap()))
     {
         FatalIOErrorInFunction(coeffDict_)
-            << "frictionalStressModel latzSchmidt: alphaMinFriction " << cMin_
+            << "frictionalStressModel latzSchmidt: alphaMinFriction " << cMin
             << " (kineticTheoryCoeffs) must be below the packing cap cMax - alphaDeltaMin = " << cap()
             << " (expected at or below c0 = " << closure().parameters().c0 << ")" << exit(FatalIOError);
     }
@@ -153,7 +153,7 @@ Foam::tmp<Foam::volScalarField> latzSchmidt::field
         const scalar rhoP = model_->parameters().rhoP;
         return granairTwoFluid::pointwise
         (
-            name, phase, tg(), dims, [&](double c, double g) { return rhoP*law(c, g); }
+            name, phase, tg(), dimPressure, [&](double c, double g) { return rhoP*law(c, g, cMin); }
         );
     }
     catch (const ::granair::Error& e)
@@ -171,9 +171,11 @@ Foam::tmp<Foam::volScalarField> latzSchmidt::frictionalPressure
     const dimensionedScalar& alphaMax
 ) const
 {
-    cMin_ = alphaMinFriction.value();
-    const double cMin = cMin_;
-    return field("latzSchmidt:pf", phase, dimPressure, [&](double c, double g) { return pressure(c, g, cMin); });
+    return field
+    (
+        "latzSchmidt:pf", phase, alphaMinFriction.value(),
+        [this](double c, double g, double cMin) { return pressure(c, g, cMin); }
+    );
 }
 
 
@@ -184,11 +186,10 @@ Foam::tmp<Foam::volScalarField> latzSchmidt::frictionalPressurePrime
     const dimensionedScalar& alphaMax
 ) const
 {
-    cMin_ = alphaMinFriction.value();
-    const double cMin = cMin_;
     return field
     (
-        "latzSchmidt:pfPrime", phase, dimPressure, [&](double c, double g) { return pressurePrime(c, g, cMin); }
+        "latzSchmidt:pfPrime", phase, alphaMinFriction.value(),
+        [this](double c, double g, double cMin) { return pressurePrime(c, g, cMin); }
     );
 }
 
@@ -204,8 +205,8 @@ Foam::tmp<Foam::volScalarField> latzSchmidt::nu
 {
     checkPhase(phase);
     const scalar rhoP = model_->parameters().rhoP;
-    const volSymmTensorField devD(dev(D));
-    const volScalarField gammaDot(sqrt(2.0*(devD && devD)));
+    const tmp<volScalarField> tg = granairTwoFluid::shearRate(D);
+    const volScalarField& gammaDot = tg();
     // pf is p_f/rho_p here (kineticTheoryModel divides by the phase density)
     tmp<volScalarField> tnu = granairTwoFluid::pointwise
     (

@@ -214,8 +214,8 @@ Foam::tmp<Foam::volScalarField> muI::nu
 {
     checkPhase(phase);
     const scalar rhoP = rheology_->parameters().rhoP;
-    const volSymmTensorField devD(dev(D));
-    const volScalarField gammaDot(sqrt(2.0*(devD && devD)));
+    const tmp<volScalarField> tg = granairTwoFluid::shearRate(D);
+    const volScalarField& gammaDot = tg();
     // pf is p_f/rho_p here (kineticTheoryModel divides by the phase density).
     const auto op = [&](double pfOverRho, double g)
     {
