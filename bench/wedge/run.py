@@ -75,12 +75,8 @@ def prepare(a):
 
 def coupling_interval(a):
     """The DEM steps per air step of the prepared air run (its couplingProperties)."""
-    path = os.path.join(a.work, "runs", f"b{a.b}", "air", "constant", "couplingProperties")
-    with open(path) as fh:
-        for line in fh:
-            if line.split()[:1] == ["couplingInterval"]:
-                return int(line.split()[1].rstrip(";"))
-    raise gc.CaseError(f"{path}: no couplingInterval entry (expected the case template's)")
+    return int(gc.foam.read_entry(os.path.join(a.work, "runs", f"b{a.b}", "air", "constant", "couplingProperties"),
+                                  "couplingInterval"))
 
 
 def run_one(a, config, repeat, contacts=False):

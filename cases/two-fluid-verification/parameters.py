@@ -4,9 +4,8 @@ against closed forms. SI units. The template (template/) prints them through
 the placeholders named as here."""
 import math
 import os
-import re
 
-from granair_cases import closed_forms as cf
+from granair_cases import calibration, closed_forms as cf
 
 G = 9.81
 RHO_F, MU = 1.2, 1.8e-5        # air [kg/m3], [Pa s] (incompressible: rhoConst)
@@ -114,16 +113,8 @@ TOL_PACKING = 0.05       # p_y at the cell's packing vs its buoyant overburden
 
 
 def latz_block():
-    """(the Latz-Schmidt rheology block's text, its c0, cMax, T0, rhoP)."""
-    with open(LATZ_BLOCK) as fh:
-        text = fh.read()
-    keys = {}
-    for k in ("c0", "cMax", "T0", "rhoP"):
-        m = re.search(r"^\s*" + k + r"\s+([-+0-9.eE]+)\s*;", text, re.M)
-        if not m:
-            raise ValueError(f"{LATZ_BLOCK}: no {k} entry")
-        keys[k] = float(m.group(1))
-    return text, keys
+    """(the Latz-Schmidt rheology block's text, {c0, cMax, T0})."""
+    return calibration.read_block(LATZ_BLOCK, ("c0", "cMax", "T0"))
 
 
 def rheology(p, friction):

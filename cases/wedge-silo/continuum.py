@@ -63,14 +63,8 @@ C = os.path.join(HERE, "continuum")
 
 def latz():
     """The numbers of the lactose Latz-Schmidt block (continuum/latzSchmidt/rheology)."""
-    path = os.path.join(C, "latzSchmidt", "rheology")
-    with open(path) as fh:
-        text = fh.read()
-    out = {k: re.search(r"^\s*" + k + r"\s+([-+0-9.eE]+)\s*;", text, re.M) for k in ("c0", "cMax", "TMin")}
-    missing = [k for k, m in out.items() if not m]
-    if missing:
-        raise gc.CaseError(f"{path}: key(s) {', '.join(missing)} missing")
-    return {k: float(m.group(1)) for k, m in out.items()}, text
+    text, values = gc.calibration.read_block(os.path.join(C, "latzSchmidt", "rheology"), ("c0", "cMax", "TMin"))
+    return values, text
 
 
 def walls_text(v):

@@ -78,6 +78,18 @@ def entry(text, key, where="rheology block"):
         raise CaseError(f"{where}: entry '{key}' is not a number")
 
 
+def read_block(path, keys):
+    """(text, {key: value}) of a rheology block file; CaseError names the file and
+    the keys it lacks."""
+    with open(path) as fh:
+        text = fh.read()
+    values = {k: entry(text, k, path) for k in keys}
+    missing = [k for k, x in values.items() if x is None]
+    if missing:
+        raise CaseError(f"{path}: key(s) {', '.join(missing)} missing")
+    return text, values
+
+
 def set_entry(text, key, value, note):
     """`text` with `key value;` (and the comment note): the entry replaced if the block has
     it, else added before its etaMax line."""
