@@ -162,14 +162,24 @@ def numbers(a, air):
              AIR_EOS="rhoConst",
              DRAG_LAW="ErgunGidaspow", PHI_FILL=phi, FILL=fill_z, FILL_G=fill_g, WALL_FRICTION=P.WALL_FRICTION,
              RHEOLOGY=rheology, PROBE_Z=dz / 2,
-             ORIFICE_PROBES=f"({dz / 2:.9g} 0 {dz / 2:.9g}) ({dz / 2:.9g} 0 {-dz / 2:.9g})",
+             # the outlet's dp/dz: the orifice's N cells and the N below, their mean
+             # weighted by area (the wedge's faces at radius r: width ~ r), as
+             # DEM-CFD's outlet monitor averages snGrad(p) over the orifice's faces
+             ORIFICE_PROBES=gc.two_fluid.orifice_probes(orifice_rs(a.mesh, dz), dz),
              SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dz:.9g} 0 {dz / 2:.9g})" for i in range(a.mesh)))
     return v, lay
 
 
+def orifice_rs(n, dz):
+    """The radii of the centres of the orifice's n cells (dz across each)."""
+    return [(i + 0.5) * dz for i in range(n)]
+
+
 def post(run, out, name, v, a, rec):
     os.makedirs(out, exist_ok=True)
-    t, w, dpdz, alpha = gc.two_fluid.series(run, 2 * v["PROBE_Z"], v["N"], f"mcc-hopper two-fluid {name}")
+    rs = orifice_rs(v["N"], 2 * v["PROBE_Z"])
+    t, w, dpdz, alpha = gc.two_fluid.series(run, 2 * v["PROBE_Z"], v["N"], f"mcc-hopper two-fluid {name}",
+                                            xs=rs, weights=rs, patch="front")
     w = w * WEDGES
     dt = gc.series.step_lengths(t)
     ends, blocks = gc.two_fluid.block_means(t, dt, [w, dpdz, alpha], BLOCK)

@@ -42,6 +42,7 @@ fraction of the cell row just above the slot), summary.txt (their means over
 the window), cost.txt (CPU s of all chunks, cells); summary.csv over the runs
 in OUT with the DEM-CFD demo's and study's rates.
 """
+import json
 import os
 
 import numpy as np
@@ -95,7 +96,9 @@ def numbers(a, b_mm, air):
         # cMax - 0.0005 = 0.5766 carries 9.4 kPa (the muI contact law's 0.005
         # would cap it at 0.5721, 0.7 kPa)
         v.update(FRICTION_MODEL="latzSchmidt", ALPHA_DELTA_MIN=LATZ_ALPHA_DELTA_MIN, SHEAR_PRESSURE="off")
-    v["ORIFICE_PROBES"] = " ".join(f"(0 {P.DEPTH / 2:.6g} {z:.9g})" for z in (v["PROBE_Z"], -v["PROBE_Z"]))
+    # the outlet's dp/dz: the orifice row's N cells and the N below, their mean
+    # (DEM-CFD's outlet monitor averages snGrad(p) over the slot's faces)
+    v["ORIFICE_PROBES"] = gc.two_fluid.orifice_probes(slot_xs(v), 2 * v["PROBE_Z"], P.DEPTH / 2)
     if a.shear_pressure_phi_max is not None:
         # p_I's packing at I = 0 (MuIFrictionalStress: the rheology block's phiMax is
         # read by p_I only, mu(I) does not use it); the span phiMax - phiMin is kept
@@ -105,6 +108,12 @@ def numbers(a, b_mm, air):
                                                  "twofluid.py --shear-pressure-phi-max (span kept)")
         v.update(PHI_MAX=phi_max, PHI_MIN=phi_max - span)
     return v
+
+
+def slot_xs(v):
+    """The x of the centres of the slot's N cells (equal cells across its width)."""
+    dx = 2 * v["B"] / v["N"]
+    return [(i + 0.5) * dx - v["B"] for i in range(v["N"])]
 
 
 def staircase(run, v, b):
@@ -164,7 +173,8 @@ boundary
 
 def post(run, out, name, v, wall=None):
     os.makedirs(out, exist_ok=True)
-    t, w, dpdz, alpha = gc.two_fluid.series(run, 2 * v["PROBE_Z"], v["N"], f"wedge-silo two-fluid {name}")
+    t, w, dpdz, alpha = gc.two_fluid.series(run, 2 * v["PROBE_Z"], v["N"], f"wedge-silo two-fluid {name}",
+                                            xs=slot_xs(v))
     dt = gc.series.step_lengths(t)
     # timeseries.csv: means over 1 ms (each row t ends its block; a b/8 run has
     # ~100 steps per ms); the window means below are over the steps themselves
@@ -219,6 +229,13 @@ def run_one(a, b_mm, air):
     goes on where it stopped (a longer --end goes further)."""
     name = f"b{b_mm}_{'air' if air else 'noair'}"
     run = os.path.join(a.out, "runs", name)
+    if a.post_only:     # the run's own numbers (it may have been set up by older code)
+        with open(os.path.join(run, "values.json")) as fh:
+            v = json.load(fh)
+        cpu, wall, _ = gc.chunks.cost(run)
+        r = post(run, os.path.join(a.out, name), name, v, wall=wall)
+        r["cpu_s"] = cpu
+        return r
     v = numbers(a, b_mm, air)
     gc.two_fluid.setup(run, T, v, lambda d: staircase(d, v, b_mm * 1e-3), a.resume)
     if a.setup_only:
@@ -252,6 +269,9 @@ def main():
                     help="the DEM fills to start from (parameters.py FILLS, FILLS_STUDY; the continuum's --fills)")
     ap.add_argument("--resume", action="store_true",
                     help="go on with the runs already in OUT/runs (set up with the same numbers) to --end")
+    ap.add_argument("--post-only", action="store_true",
+                    help="post-process the runs in OUT/runs again from their own values.json (no solver, no "
+                         "set-up check: runs set up by older code too), e.g. after a change of the post-processing")
     ap.add_argument("--mesh", type=int, default=4, help="cells across the slot (default 4: square cells of b/4)")
     # on by default: without it the powder leaves the slot as a dense plug and
     # the air hardly slows it (docs/two-fluid-model.md "On a silo", measured)

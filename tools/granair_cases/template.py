@@ -120,15 +120,16 @@ def save_values(path, values):
     return write(path, json.dumps(values, indent=1))
 
 
-def check_values(path, values, hint="remove the folder to start again", since=None):
+def check_values(path, values, hint="remove the folder to start again", since=None, ignore=()):
     """A run resumed from path's folder must have been set up with these values
     (as JSON holds them); CaseError names up to four that differ, and the hint.
     since: the values a folder set up before those keys existed had implicitly
-    (e.g. a case option added later, at its default), used where it lacks them."""
+    (e.g. a case option added later, at its default), used where it lacks them.
+    ignore: keys that do not change the run (e.g. where its probes are)."""
     with open(path) as fh:
         old = {**json.loads(json.dumps(since or {})), **json.load(fh)}
     new = json.loads(json.dumps(values))
-    diff = [k for k in sorted(set(old) | set(new)) if old.get(k) != new.get(k) and k not in PLACES]
+    diff = [k for k in sorted(set(old) | set(new)) if old.get(k) != new.get(k) and k not in PLACES and k not in ignore]
     if diff:
         raise CaseError(f"{os.path.dirname(path)} was set up with other numbers ("
                         f"{', '.join(f'{k}: {old.get(k)} vs {new.get(k)}' for k in diff[:4])}); {hint}")

@@ -5,6 +5,7 @@ and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-flui
 
     setup(run_dir, template, values, write_mesh, resume)        the run folder (or the one to resume)
     rec = run(run_dir, template, values, end, chunk, label)      the chunked run, resumable
+    orifice_probes(xs, dz, y)                                    the template's ORIFICE_PROBES
     t, w, dpdz, alpha = series(run_dir, probe_dz, probes)        the run's rows, every time step
     ends, means = block_means(t, dt, [w, dpdz, alpha], block)     their means over blocks of time
     out_by(run_dir, fill_g, share)                               when that share of the fill had left
@@ -19,9 +20,11 @@ later chunk runs the solver from its newest time to the next multiple of
 `chunk`. Why staircase cells: Debian's twoPhaseEulerFoam calls fvc::reconstruct,
 which with Debian's build gives wrong vectors in non-orthogonal cells
 (docs/two-fluid-model.md). The template's function objects give the powder's
-flow through `outlet` and `freefall`, the air pressure at two probes on the axis
-(`orificePressure`, dp/dz = their difference / probe_dz) and the solid fraction
-at the probes of the orifice row (`slotRow`).
+flow through `outlet` and `freefall`, the air pressure at the centres of the
+orifice row's cells and of the row below the orifice plane (`orificePressure`,
+orifice_probes(): dp/dz = the area-weighted mean of their differences / probe_dz,
+as granairFoam's outlet monitor averages snGrad(p) over the orifice faces) and
+the solid fraction at the probes of the orifice row (`slotRow`).
 """
 import os
 import re
@@ -199,18 +202,86 @@ def out_by(run, fill_g, share):
     return float(o[k[0], 0]) if k.size else None
 
 
-def series(run, probe_dz, probes, label="two-fluid"):
+def orifice_probes(xs, dz, y=0.0):
+    """ORIFICE_PROBES: the centres of the cells of the orifice row (z = dz/2) and of
+    the row below the orifice plane (-dz/2) at each x of xs, the row above first.
+    Before 2026-12-07 the runs had one pair on the axis: the axis cell's gradient
+    is 0.74-0.89x the orifice's mean (the cells at the slot's edges carry 1.5x the
+    centre's, measured on the wedge silo's fields), and DEM-CFD's outlet monitor
+    gives the mean."""
+    return " ".join(f"({x:.9g} {y:.6g} {z:.9g})" for z in (dz / 2, -dz / 2) for x in xs)
+
+
+def orifice_gradient(p, probe_dz, weights):
+    """dp/dz of every row of orifice_probes' pressures p (columns: the n cells above,
+    then the n below): the weighted mean of (above - below) / probe_dz."""
+    n = len(weights)
+    w = np.asarray(weights, dtype=float)
+    return ((p[:, :n] - p[:, n:2 * n]) / probe_dz) @ (w / w.sum())
+
+
+def axis_to_mean(t, g_axis, snap_t, offset):
+    """The axis pair's dp/dz series g_axis (runs before orifice_probes) moved to the
+    orifice's mean by the mean-minus-axis offset of the field snapshots at snap_t,
+    interpolated linearly in time (held beyond the first and last). An offset,
+    not a ratio: where the axis gradient is small or changes sign (the MCC
+    hopper's ~100 Pa/m) a ratio is meaningless."""
+    return g_axis + np.interp(t, snap_t, offset)
+
+
+def snapshot_offsets(run, xs, dz, weights, patch, axis_x=0.0):
+    """The orifice's mean dp/dz minus the axis pair's in every written p field of a
+    run with the axis probes only: the cells whose centres are nearest to
+    (x, +-dz/2) for x in xs, and to (axis_x, +-dz/2). Returns (times, offsets,
+    ratios of the means to the axis values)."""
+    polys = foam.plane_cells(run, patch)
+    c = np.array([q.mean(axis=0) for q in polys])        # rectangles: the vertex mean is the centre
+    cell = lambda x, z: int(np.argmin((c[:, 0] - x) ** 2 + (c[:, 1] - z) ** 2))
+    up, down = [cell(x, dz / 2) for x in xs], [cell(x, -dz / 2) for x in xs]
+    axis = (cell(axis_x, dz / 2), cell(axis_x, -dz / 2))
+    snaps = []
+    for t, d in foam.time_dirs(run):
+        if t <= 0 or not os.path.exists(os.path.join(d, "p")):
+            continue
+        p = foam.read_field(os.path.join(d, "p"), len(c))
+        g_mean = orifice_gradient(np.concatenate([p[up], p[down]])[None, :], dz, weights)[0]
+        snaps.append((t, g_mean, (p[axis[0]] - p[axis[1]]) / dz))
+    if not snaps:
+        raise CaseError(f"{run}: no p fields to move the axis probes' dp/dz to the orifice's mean")
+    s = np.array(snaps)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return s[:, 0], s[:, 1] - s[:, 2], s[:, 1] / s[:, 2]
+
+
+def probe_x(run, name="orificePressure", file="p"):
+    """The x of a probes function object's first probe, from its file's header."""
+    base = os.path.join(run, "postProcessing", name)
+    for sub in sorted(os.listdir(base)):
+        path = os.path.join(base, sub, file)
+        if os.path.exists(path):
+            with open(path, errors="replace") as fh:
+                m = re.search(r"#\s*Probe\s+0\s*\(\s*(\S+)", fh.read(4096))
+            if m:
+                return float(m.group(1))
+    raise CaseError(f"{base}: no {file} with a '# Probe 0 (x y z)' header")
+
+
+def series(run, probe_dz, probes, label="two-fluid", xs=None, weights=None, patch="frontAndBack"):
     """Every time step of a run: t, the powder's mass flow out [kg/s] (outlet + free
-    fall, positive out), the air's dp/dz between the two axis probes [Pa/m], the
-    mean solid fraction of the orifice row's `probes` probes. The start-up's rows before
-    the probes' first time (its first ~11 us) are left out, so every series has
-    the same steps; a chunk killed mid-write, which loses probe rows, ends them
-    there (said)."""
-    pr = read_series(run, "orificePressure", "p", 3)
+    fall, positive out), the air's dp/dz at the orifice [Pa/m]: the weighted mean
+    over its `probes` cells (orifice_probes; weights None: equal), the mean solid
+    fraction of the orifice row's `probes` probes. A run with the axis pair only
+    (before orifice_probes) has its axis dp/dz moved to the mean by its field
+    snapshots (snapshot_offsets: xs the cells' x, patch the plane mesh's front),
+    said. The start-up's rows before the probes' first time (its first ~11 us)
+    are left out, so every series has the same steps; a chunk killed mid-write,
+    which loses probe rows, ends them there (said)."""
+    weights = np.ones(probes) if weights is None else np.asarray(weights, dtype=float)
+    pr = read_series(run, "orificePressure", "p", 1 + 2 * probes)
     row = read_series(run, "slotRow", "alpha.particles", 1 + probes)
-    flows = {patch: (lambda d: d[d[:, 0] >= pr[0, 0] * (1 - 1e-9)])(
-                 read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2))
-             for patch in OUT_PATCHES}
+    flows = {patch_: (lambda d: d[d[:, 0] >= pr[0, 0] * (1 - 1e-9)])(
+                 read_series(run, f"{patch_}Flow", "surfaceFieldValue.dat", 2))
+             for patch_ in OUT_PATCHES}
     # as far as every file is written (a run still going has rows in some files only)
     n = min(len(pr), len(row), *(len(f) for f in flows.values()))
     t = flows["outlet"][:n, 0]
@@ -223,7 +294,20 @@ def series(run, probe_dz, probes, label="two-fluid"):
         print(f"{label}: the probe rows stop matching the flow rows at t = {t[k]:g} s "
               f"(a chunk killed mid-write): the series ends there, not at {t[n - 1]:g} s", flush=True)
         n = k
-    return t[:n], w[:n], (pr[:n, 1] - pr[:n, 2]) / probe_dz, row[:n, 1:].mean(axis=1)
+    if pr.shape[1] == 1 + 2 * probes:
+        g = orifice_gradient(pr[:n, 1:], probe_dz, weights)
+    elif pr.shape[1] == 3 and xs is not None:
+        g_axis = (pr[:n, 1] - pr[:n, 2]) / probe_dz
+        snap_t, offset, ratio = snapshot_offsets(run, xs, probe_dz, weights, patch, probe_x(run))
+        g = axis_to_mean(t[:n], g_axis, snap_t, offset)
+        win = (snap_t >= t[0]) & (snap_t <= t[n - 1])
+        print(f"{label}: axis probes only (a run set up before 2026-12-07): dp/dz moved to the orifice's mean "
+              f"by {len(offset)} field snapshots (mean - axis, median {np.median(offset[win]):.4g} Pa/m; "
+              f"mean / axis, median {np.nanmedian(ratio[win]):.3f})", flush=True)
+    else:
+        raise CaseError(f"{run}/postProcessing/orificePressure: {pr.shape[1] - 1} pressure probes, expected "
+                        f"{2 * probes} (orifice_probes over {probes} cells)")
+    return t[:n], w[:n], g, row[:n, 1:].mean(axis=1)
 
 
 def wall_seconds(run):
@@ -257,7 +341,9 @@ def setup(run_dir, template_dir, values, write_mesh, resume=False):
     keep = {k: x for k, x in values.items() if k != "END"}
     path = os.path.join(run_dir, "values.json")
     if resume and os.path.exists(path):
-        template.check_values(path, keep, "rerun without --resume to start again")
+        # where the pressure probes are does not change a run: one set up with the
+        # axis pair (before orifice_probes) goes on with it (series() scales it)
+        template.check_values(path, keep, "rerun without --resume to start again", ignore=("ORIFICE_PROBES",))
         return
     runner.clean(run_dir)
     template.render(template_dir, run_dir, {**values, "FRICTION": friction(values, template_dir)})

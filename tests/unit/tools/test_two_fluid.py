@@ -2,7 +2,8 @@
 """The two-fluid level's readers (tools/granair_cases/two_fluid.py) on hand-made
 function-object files: a restart's rows replace the earlier file's from its first
 time on, a row cut by a killed solver is dropped, the flow and probe series are
-put on the same steps (dp/dz = the probes' difference over their distance, the
+put on the same steps (dp/dz = the weighted mean of the orifice probes' differences
+over their distance, a run with the axis pair moved by its snapshots' offset, the
 orifice row's mean), the share-of-fill time, and block means that end at the
 blocks' ends."""
 import os
@@ -39,17 +40,18 @@ with tempfile.TemporaryDirectory() as run:
               [f"{t:g} {9.0 if t > 0.0045 else w}" for t in steps[:6]])
         write(os.path.join(pp, f"{patch}Flow", "0.005", "surfaceFieldValue.dat"), "# Time sum(alphaRhoPhi)\n",
               [f"{t:g} {w}" for t in steps[4:]])
-    # probes: p above and below (100 Pa apart over 2 mm: -5e4 Pa/m), and a row of two
+    # orifice_probes over two cells: p above (both 100000) and below (100100, 100300)
+    # over 2 mm: -5e4 and -1.5e5 Pa/m, mean -1e5 (weights 1:3: -1.25e5); a row of two
     # probes at 0.5 and 0.7; the second run's file ends in a row cut mid-write
-    write(os.path.join(pp, "orificePressure", "0", "p"), "# Probe 0 (0 0 1)\n# Probe 1 (0 0 -1)\n",
-          [f"{t:g} 100000 100100" for t in steps[:6]])
-    write(os.path.join(pp, "orificePressure", "0.005", "p"), "# Probe 0 (0 0 1)\n# Probe 1 (0 0 -1)\n",
-          [f"{t:g} 100000 100100" for t in steps[4:]] + ["0.011 1000"])
+    head = "".join(f"# Probe {i} ({x} 0 {z})\n" for i, (x, z) in enumerate([(0.5, 1), (1.5, 1), (0.5, -1), (1.5, -1)]))
+    write(os.path.join(pp, "orificePressure", "0", "p"), head, [f"{t:g} 100000 100000 100100 100300" for t in steps[:6]])
+    write(os.path.join(pp, "orificePressure", "0.005", "p"), head,
+          [f"{t:g} 100000 100000 100100 100300" for t in steps[4:]] + ["0.011 1000 1000"])
     write(os.path.join(pp, "slotRow", "0", "alpha.particles"), "# Probe 0\n# Probe 1\n",
           [f"{t:g} 0.5 0.7" for t in steps])
     os.utime(os.path.join(pp, "orificePressure", "0.005", "p"))
 
-    rows = two_fluid.rows_of(os.path.join(pp, "orificePressure", "0.005", "p"), 3)
+    rows = two_fluid.rows_of(os.path.join(pp, "orificePressure", "0.005", "p"), 5)
     check("a cut row is dropped", len(rows), 6)
     flow = two_fluid.read_series(run, "outletFlow", "surfaceFieldValue.dat", 2)
     check("restart: steps", flow[:, 0], steps)
@@ -57,12 +59,22 @@ with tempfile.TemporaryDirectory() as run:
     t, w, dpdz, alpha = two_fluid.series(run, 2e-3, 2)
     check("series: steps", t, steps)
     check("series: outlet + free fall", w, [3e-3] * 10)
-    check("series: dp/dz", dpdz, [-5e4] * 10, 1e-6)
+    check("series: dp/dz, the orifice's mean", dpdz, [-1e5] * 10, 1e-6)
+    check("series: dp/dz, area-weighted", two_fluid.series(run, 2e-3, 2, weights=[1, 3])[2], [-1.25e5] * 10, 1e-6)
+    check("probe_x: the first probe's x", two_fluid.probe_x(run), 0.5)
     check("series: orifice row mean", alpha, [0.6] * 10)
     # 3 g/s for 10 ms: 0.03 g out; a third of a 0.09 g fill is out at the step that reaches it
     check("out_by", two_fluid.out_by(run, 0.09, 1 / 3), 0.010)
     if two_fluid.out_by(run, 0.09, 0.5) is not None:
         failures.append("out_by: half of the fill is not out yet, expected None")
+
+# a run with the axis pair only: its dp/dz plus the snapshots' mean-minus-axis offset,
+# linear in time between them and held beyond
+check("axis_to_mean", two_fluid.axis_to_mean(np.array([0.0, 0.1, 0.15, 0.2, 0.3]), np.full(5, -100.0),
+                                             np.array([0.1, 0.2]), np.array([-20.0, -40.0])), [-120, -120, -130, -140, -140])
+check("orifice_probes: above, then below", [float(x) for x in two_fluid.orifice_probes([0.5, 1.5], 2.0, 0.25)
+                                            .replace("(", " ").replace(")", " ").split()],
+      [0.5, 0.25, 1, 1.5, 0.25, 1, 0.5, 0.25, -1, 1.5, 0.25, -1])
 
 # block means over 5 ms of a ramp on 1 ms steps: the blocks end at 5 and 10 ms
 t = np.array(steps)
