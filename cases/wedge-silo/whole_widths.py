@@ -255,6 +255,11 @@ def main():
     if lb:
         gc.series.write_rows(os.path.join(RES, "whole_bands_levels.csv"), lb, fmt="{:.6g}")
         lines += more
+    # the two-fluid runs before gc.two_fluid.orifice_probes whose fields are gone
+    lines += ["", "Outlet dp/dz: the mean over the orifice's faces (cells) for DEM-CFD, the continuum and the "
+              "calibrated two-fluid runs; the literature two-fluid runs (reference-two-fluid-study-whole/, set up "
+              "before 2026-12-07, their fields not kept) give their axis cell's, which the later runs' fields put at "
+              "0.74-0.89x the orifice's mean on 3-10 cells across (docs/two-fluid-model.md)."]
     plot_levels(by, levels, os.path.join(RES, "whole_levels.png"))
     with open(os.path.join(RES, "whole_bands.md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
