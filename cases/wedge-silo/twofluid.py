@@ -195,10 +195,16 @@ def post(run, out, name, v, wall=None):
     G = gc.series.time_mean(t, dpdz, t0, t1, dt=dt)
     A = gc.series.time_mean(t, alpha, t0, t1, dt=dt)
     out_kg = float(out_t[-1])
+    # the air pressure at the orifice and about b above it, as DEM-CFD's outlet and
+    # above monitors give it, from the fields written in the window (every --chunk s)
+    planes = gc.two_fluid.plane_pressures(run, 2 * v["B"], 2 * v["PROBE_Z"], t0, t1, v["RHO_F"], v["G"]) \
+        if v["AIR"] else None
+    planes = [(f"fields_{k}", x) for k, x in planes.items()] if planes else []
     gc.series.write_keys(os.path.join(out, "summary.txt"), [("W_kg_s", W), ("outlet_dpdz_Pa_m", G),
                                                              ("slot_row_alpha", A), ("window_t0_s", t0),
                                                              ("window_t1_s", t1), ("t_end_s", float(t[-1])),
-                                                             ("discharged_g", out_kg * 1e3), ("fill_g", v["FILL_G"])])
+                                                             ("discharged_g", out_kg * 1e3), ("fill_g", v["FILL_G"])]
+                         + planes)
     air = bool(v["AIR"])
     if wall is None:    # from the solver logs (start-up and main run)
         wall = gc.two_fluid.wall_seconds(run)

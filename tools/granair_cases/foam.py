@@ -86,6 +86,12 @@ def plane_cells(case, patch="frontAndBack"):
     return [polys[c][0] for c in range(len(polys))]
 
 
+def cell_centres(case, patch="frontAndBack"):
+    """(x, z) of each cell of a plane mesh of rectangular cells (plane_cells: the
+    vertex mean of its face on `patch` is its centre), shape (n, 2)."""
+    return np.array([q.mean(axis=0) for q in plane_cells(case, patch)])
+
+
 def time_dirs(case):
     """[(t, path)] of the time folders of a case (serial or reconstructed), sorted."""
     out = []

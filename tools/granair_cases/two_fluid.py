@@ -8,6 +8,7 @@ and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-flui
     orifice_probes(xs, dz, y)                                    the template's ORIFICE_PROBES
     t, w, dpdz, alpha = series(run_dir, probe_dz, probes)        the run's rows, every time step
     ends, means = block_means(t, dt, [w, dpdz, alpha], block)     their means over blocks of time
+    plane_pressures(run_dir, b, dx, t0, t1, rho_f, g)            p and dp/dz at the orifice and b above (fields)
     out_by(run_dir, fill_g, share)                               when that share of the fill had left
     closure(phi_fill)                                            the frictional closure's numbers
     friction(values)                                             its entry in turbulenceProperties.particles
@@ -234,8 +235,7 @@ def snapshot_offsets(run, xs, dz, weights, patch, axis_x=0.0):
     run with the axis probes only: the cells whose centres are nearest to
     (x, +-dz/2) for x in xs, and to (axis_x, +-dz/2). Returns (times, offsets,
     ratios of the means to the axis values)."""
-    polys = foam.plane_cells(run, patch)
-    c = np.array([q.mean(axis=0) for q in polys])        # rectangles: the vertex mean is the centre
+    c = foam.cell_centres(run, patch)
     cell = lambda x, z: int(np.argmin((c[:, 0] - x) ** 2 + (c[:, 1] - z) ** 2))
     up, down = [cell(x, dz / 2) for x in xs], [cell(x, -dz / 2) for x in xs]
     axis = (cell(axis_x, dz / 2), cell(axis_x, -dz / 2))
@@ -251,6 +251,45 @@ def snapshot_offsets(run, xs, dz, weights, patch, axis_x=0.0):
     s = np.array(snaps)
     with np.errstate(divide="ignore", invalid="ignore"):
         return s[:, 0], s[:, 1] - s[:, 2], s[:, 1] / s[:, 2]
+
+
+def plane_pressures(run, b, dx, t0, t1, rho_f, g, patch="frontAndBack"):
+    """The air pressure at two planes of a plane (2-D) silo from the field
+    snapshots in [t0, t1], as DEM-CFD's monitors give them: the orifice
+    plane z = 0 over |x| < b/2 (its cells above and below: the mean p of the
+    pair, the mean gradient) and the face layer z = b (DEM-CFD's `above`,
+    about b over the orifice: every cell of the row below it with one above
+    it). p relative to the air at rest: p - p_top - rho_f g (z_top - z), p_top
+    the mean of the top row of cells (air above the powder). Returns dict
+    (outlet_p_Pa, outlet_dpdz_Pa_m, above_p_Pa, above_dpdz_Pa_m, snapshots),
+    or None when no field was written in the window."""
+    c = foam.cell_centres(run, patch)
+    row = lambda z: np.nonzero(np.abs(c[:, 1] - z) < 0.1 * dx)[0]
+
+    def pairs(z, half=None):
+        lo, hi = row(z - dx / 2), row(z + dx / 2)
+        if half is not None:
+            lo, hi = lo[np.abs(c[lo, 0]) < half], hi[np.abs(c[hi, 0]) < half]
+        above = {round(x / dx, 3): i for x, i in zip(c[hi, 0], hi)}
+        keep = [(i, above[round(x / dx, 3)]) for x, i in zip(c[lo, 0], lo) if round(x / dx, 3) in above]
+        if not keep:
+            raise CaseError(f"{run}: no cells on both sides of z = {z:g} m")
+        return np.array(keep).T
+
+    (o_lo, o_hi), (a_lo, a_hi) = pairs(0.0, b / 2), pairs(b)
+    top = np.nonzero(c[:, 1] > c[:, 1].max() - 0.1 * dx)[0]
+    rows = []
+    for t, d in foam.time_dirs(run):
+        if t < t0 - 1e-9 or t > t1 + 1e-9 or not os.path.exists(os.path.join(d, "p")):
+            continue
+        p = foam.read_field(os.path.join(d, "p"), len(c))
+        p = p - p[top].mean() - rho_f * g * (c[top, 1].mean() - c[:, 1])
+        rows.append([0.5 * (p[o_lo] + p[o_hi]).mean(), ((p[o_hi] - p[o_lo]) / dx).mean(),
+                     0.5 * (p[a_lo] + p[a_hi]).mean(), ((p[a_hi] - p[a_lo]) / dx).mean()])
+    if not rows:       # a short run (a test) writes no field in its window
+        return None
+    m = np.array(rows).mean(axis=0)
+    return dict(outlet_p_Pa=m[0], outlet_dpdz_Pa_m=m[1], above_p_Pa=m[2], above_dpdz_Pa_m=m[3], snapshots=len(rows))
 
 
 def probe_x(run, name="orificePressure", file="p"):
