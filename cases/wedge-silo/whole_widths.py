@@ -32,6 +32,10 @@ RES = os.path.join(HERE, "reference-study-whole")
 CONTINUUM = os.path.join(HERE, "reference-continuum-study-whole")
 TWO_FLUID = os.path.join(HERE, "reference-two-fluid-study-whole")
 TWO_FLUID_CAL = os.path.join(HERE, "reference-two-fluid-calibrated")
+# the calibrated law on 4 cells across the slot at every width (b/4: the b = 10 mm
+# runs at the folder's top, b = 5 and 15 mm in their mesh folders)
+TWO_FLUID_CAL_4 = {5: os.path.join(TWO_FLUID_CAL, "b5_mesh4"), 10: TWO_FLUID_CAL,
+                   15: os.path.join(TWO_FLUID_CAL, "b15_mesh4")}
 COLOURS = {5: "tab:blue", 10: "tab:orange", 15: "tab:green"}
 
 
@@ -59,9 +63,11 @@ def runs():
 
 
 def continuum_runs(folder=CONTINUUM):
-    """The continuum runs (mu(I) or two-fluid) from the study fills in folder: a rate per
-    step or per 1 ms, so its 0.1 s trailing mean is drawn and averaged, as the DEM's."""
-    return load(lambda n: os.path.join(folder, n, "timeseries.csv"), lambda n: os.path.join(folder, n, "level.json"),
+    """The continuum runs (mu(I) or two-fluid) from the study fills in folder (or a
+    folder per width {b: folder}): a rate per step or per 1 ms, so its 0.1 s trailing
+    mean is drawn and averaged, as the DEM's."""
+    where = (lambda n: folder[int(n[1:n.index("_")])]) if isinstance(folder, dict) else (lambda n: folder)
+    return load(lambda n: os.path.join(where(n), n, "timeseries.csv"), lambda n: os.path.join(where(n), n, "level.json"),
                 ("mass_flow_kg_s", "outlet_dpdz_Pa_m"))
 
 
@@ -156,7 +162,7 @@ def plot_levels(by, levels, path):
     plt = gc.plots.pyplot()
     widths = sorted({b for b, _ in by})
     fig, axes = plt.subplots(3, len(widths), figsize=(5 * len(widths), 10), squeeze=False)
-    styles = [("DEM-CFD", "-", 1.4)] + [(t.split(" (")[0], ls, 1.0) for (t, _), ls in zip(levels, ("--", ":", "-."))]
+    styles = [("DEM-CFD", "-", 1.4)] + [(t.split(" (")[0], ls, 1.0) for (t, _), ls in zip(levels, ("--", ":", "-.", (0, (6, 1, 1, 1, 1, 1))))]
     for (title, ls, lw), runs in zip(styles, [by] + [c for _, c in levels]):
         rate = "mass_flow_kg_s" if runs is by else "mass_flow_kg_s_mean"
         for j, b in enumerate(widths):
@@ -248,7 +254,9 @@ def main():
     rows, cont, tf = band_rows(by), continuum_runs(), continuum_runs(TWO_FLUID)
     levels = [("Continuum mu(I) (reference-continuum-study-whole/)", cont),
               ("Two-fluid (reference-two-fluid-study-whole/)", tf),
-              ("Two-fluid, DEM-calibrated mu(I) (reference-two-fluid-calibrated/)", continuum_runs(TWO_FLUID_CAL))]
+              ("Two-fluid, DEM-calibrated mu(I) (reference-two-fluid-calibrated/)", continuum_runs(TWO_FLUID_CAL)),
+              ("Two-fluid, DEM-calibrated mu(I), 4 cells across (reference-two-fluid-calibrated/b5_mesh4, b10, "
+               "b15_mesh4)", continuum_runs(TWO_FLUID_CAL_4))]
     gc.series.write_rows(os.path.join(RES, "whole_bands.csv"), rows, fmt="{:.6g}")
     lines = markdown(by, rows, levels)
     lb, more = level_bands(rows, levels)
