@@ -4,6 +4,7 @@ stress and granair drag (libgranairTwoFluid.so) in 1-D columns against
 closed forms (README.md).
 
     study.py [--test bed|settling|consolidation|packing|all] [--out DIR] [--check] [--setup-only]
+             [--packing-eta-max PA_S]
 
 bed:            glass beads 0.5 mm under upflow at four superficial velocities:
                   packed runs: air pressure drop across the bed interior within
@@ -25,6 +26,7 @@ Writes OUT/<test>.csv and OUT/<test>.png, and OUT/runs/<run>/ (the cases).
 """
 import math
 import os
+import re
 
 import numpy as np
 
@@ -316,9 +318,13 @@ def consolidation_analyse(out, c):
 
 # --- packing: Latz-Schmidt at rest --------------------------------------------
 
-def packing_values():
-    # the block's rhoP against the phase's RHO_P: latzSchmidt checks it at start-up
-    return values(P.PACKING, RHEOLOGY=P.latz_block()[0])
+def packing_values(eta_max=None):
+    # the block's rhoP against the phase's RHO_P: latzSchmidt checks it at start-up;
+    # eta_max: the block's viscosity cap replaced (--packing-eta-max, a diagnostic)
+    block = P.latz_block()[0]
+    if eta_max is not None:
+        block = re.sub(r"etaMax\s+[^;]+;", f"etaMax {eta_max:.6g};", block)
+    return values(P.PACKING, RHEOLOGY=block)
 
 
 def packing_analyse(out, c):
@@ -405,8 +411,13 @@ def main():
     ap.add_argument("--test", nargs="+", default=["all"], choices=TESTS + ("all", "bad-input"),
                     help="all: the four closed-form tests; bad-input: the library's start-up errors")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (default 2)")
+    ap.add_argument("--packing-eta-max", type=float, default=None, metavar="PA_S",
+                    help="packing: the Latz-Schmidt block's etaMax replaced by this [Pa s] (a diagnostic; "
+                         "default: the block's 1e3)")
     a = gc.cli.parse(ap, os.path.join(HERE, "results"))
     tests = TESTS if "all" in a.test else tuple(t for t in a.test if t in TESTS)
+    if a.packing_eta_max is not None and not a.packing_eta_max > 0:
+        ap.error(f"--packing-eta-max {a.packing_eta_max:g}: expected a viscosity > 0 [Pa s]")
     runs = []
     if "bed" in tests:
         for name, u_s, role in bed_runs():
@@ -416,7 +427,7 @@ def main():
     if "consolidation" in tests:
         runs.append(("consolidation", consolidation_values()))
     if "packing" in tests:
-        runs.append(("packing", packing_values()))
+        runs.append(("packing", packing_values(a.packing_eta_max)))
     bad = "bad-input" in a.test
     if bad:
         runs += [(name, bad_input_values(change)) for name, change, _ in BAD_INPUT]
