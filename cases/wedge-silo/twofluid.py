@@ -15,7 +15,7 @@ One slot width.
                 [--dry viscosity|drag] [--outer-until T] [--rheology-from literature|calibration]
                 [--dem-size demo|study] [--rheology-d D] [--rheology muI|latzSchmidt]
                 [--air-mu-factor F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
-                [--out DIR] [--setup-only]
+                [--out DIR] [--setup-only] [--post-only]
 
 The silo, its fill and the mu(I) block are the continuum level's
 (continuum.py numbers(): the same mesh with its free-fall region, the DEM
@@ -36,11 +36,15 @@ and wall time; --resume goes on from the newest time folder) and ends at
 the hopper's staircase cells; --past-half: at --end, a steadiness check;
 the window stays the DEM's).
 Per run OUT/b<b>_<air|noair>/: timeseries.csv (1 ms means: t, W [kg/s] through the
-outlet and the open sides below the slot, outlet dp/dz [Pa/m] on the axis
-between the cell centres just above and below the slot plane, the mean solid
-fraction of the cell row just above the slot), summary.txt (their means over
-the window), cost.txt (CPU s of all chunks, cells); summary.csv over the runs
-in OUT with the DEM-CFD demo's and study's rates.
+outlet and the open sides below the slot, outlet dp/dz [Pa/m]: the mean over
+the slot's cells of the gradient between the cell centres just above and
+below the slot plane, as DEM-CFD's outlet monitor; the mean solid fraction of
+the cell row just above the slot), summary.txt (their means over the window;
+with air also `fields_*`: p and dp/dz on the slot plane and one b above it
+from the fields written in the window, as DEM-CFD's outlet and above
+monitors), cost.txt (CPU s of all chunks, cells); summary.csv over the runs
+in OUT with the DEM-CFD demo's and study's rates. --post-only posts the runs
+in OUT/runs again from their own values.json (runs set up before a change).
 """
 import json
 import os
