@@ -35,8 +35,10 @@ template (cases/wedge-silo/two-fluid/template, gc.two_fluid), the frictional
 closure's numbers gc.two_fluid.closure()'s, as there.
 
 Per run OUT/<air|noair>/: timeseries.csv (10 ms means: t, W [kg/s] of the full
-hopper through the outlet and the free fall's side, outlet dp/dz [Pa/m] on the
-axis between the cell centres just above and below the orifice plane, the mean
+hopper through the outlet and the free fall's side, outlet dp/dz [Pa/m]: the
+area-weighted mean over the orifice's cells of the gradient between the cell
+centres just above and below the orifice plane (as DEM-CFD's outlet monitor;
+runs before 2026-12-07 had one pair on the axis, gc.two_fluid.series), the mean
 solid fraction of the cell row just above the orifice), summary.txt (their
 means over [--steady-from, end], the fill, the cost), level.json (level
 `two-fluid`); OUT/summary.md, the two runs beside the continuum (with and
