@@ -4,8 +4,9 @@ function-object files: a restart's rows replace the earlier file's from its firs
 time on, a row cut by a killed solver is dropped, the flow and probe series are
 put on the same steps (dp/dz = the weighted mean of the orifice probes' differences
 over their distance, a run with the axis pair moved by its snapshots' offset, the
-orifice row's mean), the share-of-fill time, and block means that end at the
-blocks' ends."""
+orifice row's mean), the share-of-fill time, block means that end at the
+blocks' ends, and the air pressure on the orifice plane and one b above it from
+the fields of a hand-made plane mesh (plane_pressures, snapshot_offsets)."""
 import os
 import sys
 import tempfile
@@ -97,6 +98,59 @@ try:
 except two_fluid.CaseError as e:
     if "density" not in str(e):
         failures.append(f"dry: the message should name the way, got: {e}")
+
+# A plane mesh of 1 mm cells (x -2..2 mm, z -2..6 mm; the patch frontAndBack its only
+# faces, which is all plane_cells reads) and p = P0 + G(x) z - rho_f g z with
+# G(x) = G0 (1 + (x / 1 mm)^2): relative to the air at rest (the top row's mean
+# at z_top = 5.5 mm, the hydrostatic removed) p is G(x) z - mean(G) z_top, so on
+# the orifice plane of a 2 mm slot (x = +-0.5 mm) p = -mean(G) z_top and dp/dz
+# = G(0.5 mm); one b = 2 mm above it dp/dz is the mean of G over the row; over
+# a 4 mm slot the mean minus the axis cell's (x = 0: the cell at -0.5 mm)
+# gradient is mean(G) - G(0.5 mm).
+with tempfile.TemporaryDirectory() as run:
+    mesh = os.path.join(run, "constant", "polyMesh")
+    os.makedirs(mesh)
+    nx, nz, dx = 4, 8, 1e-3
+    cells = [(i, k) for k in range(nz) for i in range(nx)]
+    pts, faces = [], []
+    for i, k in cells:
+        x0, z0 = -2e-3 + i * dx, -2e-3 + k * dx
+        base = len(pts)
+        pts += [(x0, y, z0) for y in (0.0, 1.0)] + [(x0 + dx, y, z0) for y in (0.0, 1.0)] + \
+               [(x0 + dx, y, z0 + dx) for y in (0.0, 1.0)] + [(x0, y, z0 + dx) for y in (0.0, 1.0)]
+        faces += [(base, base + 2, base + 4, base + 6), (base + 1, base + 3, base + 5, base + 7)]
+    def flist(name, cls, items):
+        with open(os.path.join(mesh, name), "w") as fh:
+            fh.write(f"FoamFile {{ class {cls}; object {name}; }}\n{len(items)}\n(\n" + "\n".join(items) + "\n)\n")
+    flist("points", "vectorField", [f"({x:.9g} {y:g} {z:.9g})" for x, y, z in pts])
+    flist("faces", "faceList", ["4(" + " ".join(map(str, f)) + ")" for f in faces])
+    flist("owner", "labelList", [str(f // 2) for f in range(len(faces))])
+    with open(os.path.join(mesh, "boundary"), "w") as fh:
+        fh.write(f"1\n(\n    frontAndBack\n    {{\n        type empty;\n        nFaces {len(faces)};\n"
+                 f"        startFace 0;\n    }}\n)\n")
+    g0, rho_f, g = -1000.0, 1.2, 9.81
+    xc = np.array([-2e-3 + (i + 0.5) * dx for i, k in cells])
+    zc = np.array([-2e-3 + (k + 0.5) * dx for i, k in cells])
+    G = lambda x: g0 * (1 + (x / 1e-3) ** 2)      # noqa: E731
+    for t in ("0.1", "0.2"):
+        os.makedirs(os.path.join(run, t))
+        pf = 1e5 + G(xc) * zc - rho_f * g * zc
+        with open(os.path.join(run, t, "p"), "w") as fh:
+            fh.write(f"internalField nonuniform List<scalar> {len(pf)}\n(\n"
+                     + "\n".join(f"{v:.12g}" for v in pf) + "\n)\n;\n")
+    got = two_fluid.plane_pressures(run, 2e-3, dx, 0.1, 0.2, rho_f, g)
+    g_slot = G(0.5e-3)                              # both slot columns: x = +-0.5 mm
+    check("plane_pressures: outlet dp/dz, the slot's columns", got["outlet_dpdz_Pa_m"], g_slot, 1e-6)
+    check("plane_pressures: outlet p relative to the air at rest", got["outlet_p_Pa"],
+          -np.mean([G(x) for x in (-1.5e-3, -0.5e-3, 0.5e-3, 1.5e-3)]) * 5.5e-3, 1e-6)
+    check("plane_pressures: above dp/dz, every column", got["above_dpdz_Pa_m"],
+          np.mean([G(x) for x in (-1.5e-3, -0.5e-3, 0.5e-3, 1.5e-3)]), 1e-6)
+    check("plane_pressures: snapshots", got["snapshots"], 2)
+    check("plane_pressures: no field in the window", two_fluid.plane_pressures(run, 2e-3, dx, 0.3, 0.4, rho_f, g) is None, True)
+    t_s, off, ratio = two_fluid.snapshot_offsets(run, [-1.5e-3, -0.5e-3, 0.5e-3, 1.5e-3], dx, np.ones(4), "frontAndBack")
+    check("snapshot_offsets: times", t_s, [0.1, 0.2])
+    check("snapshot_offsets: the 4 mm slot's mean minus the axis cell's", off,
+          [np.mean([G(x) for x in (-1.5e-3, -0.5e-3, 0.5e-3, 1.5e-3)]) - G(0.5e-3)] * 2, 1e-6)
 
 # p_I's packing moved, the span kept, the block's other entries untouched
 blk = "rheology\n{\n    type muI;\n    muS 0.4;\n    phiMax 0.6;\n    phiMin 0.45;\n    etaMax 1e5;\n}\n"
