@@ -340,6 +340,7 @@ def series(run, probe_dz, probes, label="two-fluid", xs=None, weights=None, patc
         snap_t, offset, ratio = snapshot_offsets(run, xs, probe_dz, weights, patch, probe_x(run))
         g = axis_to_mean(t[:n], g_axis, snap_t, offset)
         win = (snap_t >= t[0]) & (snap_t <= t[n - 1])
+        win = win if win.any() else np.ones_like(win)      # no snapshot inside the series: all of them
         print(f"{label}: axis probes only (a run set up before 2026-12-07): dp/dz moved to the orifice's mean "
               f"by {len(offset)} field snapshots (mean - axis, median {np.median(offset[win]):.4g} Pa/m; "
               f"mean / axis, median {np.nanmedian(ratio[win]):.3f})", flush=True)
@@ -381,7 +382,7 @@ def setup(run_dir, template_dir, values, write_mesh, resume=False):
     path = os.path.join(run_dir, "values.json")
     if resume and os.path.exists(path):
         # where the pressure probes are does not change a run: one set up with the
-        # axis pair (before orifice_probes) goes on with it (series() scales it)
+        # axis pair (before orifice_probes) goes on with it (series() moves it to the mean)
         template.check_values(path, keep, "rerun without --resume to start again", ignore=("ORIFICE_PROBES",))
         return
     runner.clean(run_dir)
