@@ -168,7 +168,7 @@ def numbers(a, air):
              # weighted by area (the wedge's faces at radius r: width ~ r), as
              # DEM-CFD's outlet monitor averages snGrad(p) over the orifice's faces
              ORIFICE_PROBES=gc.two_fluid.orifice_probes(orifice_rs(a.mesh, dz), dz),
-             SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dz:.9g} 0 {dz / 2:.9g})" for i in range(a.mesh)))
+             SLOT_ROW_PROBES=gc.two_fluid.row_probes(orifice_rs(a.mesh, dz), dz / 2))
     return v, lay
 
 

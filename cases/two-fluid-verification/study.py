@@ -26,7 +26,6 @@ Writes OUT/<test>.csv and OUT/<test>.png, and OUT/runs/<run>/ (the cases).
 """
 import math
 import os
-import re
 
 import numpy as np
 
@@ -323,7 +322,7 @@ def packing_values(eta_max=None):
     # eta_max: the block's viscosity cap replaced (--packing-eta-max, a diagnostic)
     block = P.latz_block()[0]
     if eta_max is not None:
-        block = re.sub(r"etaMax\s+[^;]+;", f"etaMax {eta_max:.6g};", block)
+        block = gc.calibration.set_entry(block, "etaMax", eta_max, "--packing-eta-max (a diagnostic)")
     return values(P.PACKING, RHEOLOGY=block)
 
 

@@ -91,8 +91,7 @@ def numbers(a, b_mm, air):
              TITLE=f"The wedge silo, b = {b_mm} mm (cases/wedge-silo/twofluid.py, --fills {a.fills})",
              # the slot row's solid fraction: a probe at each of its N cell centres
              # (equal cells, so their mean is the row's mean)
-             SLOT_ROW_PROBES=" ".join(f"({(i + 0.5) * dx - v['B']:.9g} {P.DEPTH / 2:.6g} {dx / 2:.9g})"
-                                      for i in range(a.mesh)))
+             SLOT_ROW_PROBES=gc.two_fluid.row_probes(slot_xs(v), dx / 2, P.DEPTH / 2))
     if latz:
         # the frictional model latzSchmidt (its block has no d: the phase's is the
         # primary's); its packing cap cMax - alphaDeltaMin must hold the silo's

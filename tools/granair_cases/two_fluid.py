@@ -6,6 +6,7 @@ and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-flui
     setup(run_dir, template, values, write_mesh, resume)        the run folder (or the one to resume)
     rec = run(run_dir, template, values, end, chunk, label)      the chunked run, resumable
     orifice_probes(xs, dz, y)                                    the template's ORIFICE_PROBES
+    row_probes(xs, z, y)                                         a row's probes (SLOT_ROW_PROBES)
     t, w, dpdz, alpha = series(run_dir, probe_dz, probes)        the run's rows, every time step
     ends, means = block_means(t, dt, [w, dpdz, alpha], block)     their means over blocks of time
     plane_pressures(run_dir, b, dx, t0, t1, rho_f, g)            p and dp/dz at the orifice and b above (fields)
@@ -210,7 +211,12 @@ def orifice_probes(xs, dz, y=0.0):
     is 0.74-0.89x the orifice's mean (the cells at the slot's edges carry 1.5x the
     centre's, measured on the wedge silo's fields), and DEM-CFD's outlet monitor
     gives the mean."""
-    return " ".join(f"({x:.9g} {y:.6g} {z:.9g})" for z in (dz / 2, -dz / 2) for x in xs)
+    return f"{row_probes(xs, dz / 2, y)} {row_probes(xs, -dz / 2, y)}"
+
+
+def row_probes(xs, z, y=0.0):
+    """probeLocations of a row of cells: (x, y, z) for each x of xs."""
+    return " ".join(f"({x:.9g} {y:.6g} {z:.9g})" for x in xs)
 
 
 def orifice_gradient(p, probe_dz, weights):
