@@ -10,6 +10,7 @@
 #include <system_error>
 #include <unordered_map>
 
+#include "FluidForceFix.hpp"
 #include "FluidForceStore.hpp"
 #include "ScreenErrorEcho.hpp"
 #include "atom.h"
@@ -115,6 +116,9 @@ LiggghtsDriver::LiggghtsDriver(MPI_Comm comm, const std::string& logDir) : logDi
     void* handle = nullptr;
     lammps_open(nArgs, const_cast<char**>(args), comm, &handle);
     lmp_ = static_cast<LAMMPS_NS::LAMMPS*>(handle);
+    // granair's own fix style, known before any script line runs (a script
+    // may define the fluid-force fix itself).
+    registerFluidForceFix(lmp_);
 
     // Route LIGGGHTS' screen through the ERROR-echoing stream on every rank
     // (on rank 0 it wraps the screen file; elsewhere the screen is NULL and

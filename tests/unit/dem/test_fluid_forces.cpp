@@ -16,7 +16,6 @@
 #include "DemTestSupport.hpp"
 #include "LiggghtsDriver.hpp"
 #include "core/Error.hpp"
-#include "fix_external.h"
 #include "lammps.h"
 #include "modify.h"
 
@@ -67,9 +66,9 @@ TEST_CASE("dem: an upward fluid force m g holds a sphere still, zero force lets 
 
 TEST_CASE("dem: particles created after setFluidForces start with zero fluid force", "[dem]") {
     // Particle 1 is held by m g, then deleted; a new particle is created
-    // into the same local slot. fix external's own array would still hold
-    // the old force there (FixExternal has no set_arrays); the stored force
-    // must be zero, so the new particle falls at g. Then ten more come from
+    // into the same local slot. A per-particle array without set_arrays
+    // (LIGGGHTS' fix external, used before) would still hold the old force
+    // there; the stored force must be zero, so the new particle falls at g. Then ten more come from
     // fix insert/pack during a run (LIGGGHTS' insertion path): they too.
     LiggghtsDriver dem(MPI_COMM_WORLD, test::logDir("new_particle_force"));
     dem.runFile(test::script("free_fall.liggghts"));
@@ -87,11 +86,9 @@ TEST_CASE("dem: particles created after setFluidForces start with zero fluid for
     dem.getParticles(p);
     REQUIRE(p.size() == 1);
     CHECK(p[0].x.z() == 0.12);
-    // The hazard this design avoids, as it is in LIGGGHTS 3.8.0: the fix's
-    // own array still holds the deleted particle's force in slot 0.
-    auto* ext = static_cast<LAMMPS_NS::FixExternal*>(
-        dem.lammps()->modify->find_fix_id("granair_fluid"));
-    CHECK(ext->fexternal[0][2] == m[0] * test::gravity);
+    std::vector<double> stored;
+    dem.getFluidForces(stored);
+    CHECK(stored == std::vector<double>{0.0, 0.0, 0.0});
     const double t0 = dem.time();
     dem.advance(1000);
     dem.getParticles(p);
@@ -200,4 +197,33 @@ TEST_CASE("dem: forces one particle at a time act as setFluidForces; problems na
     for (std::size_t k = 0; k + 1 < after.size(); ++k) dem.setFluidForce(k, f[k].data());
     CHECK_THAT(test::inputErrorFrom([&] { dem.endFluidForces(); }),
                Catch::Matchers::Contains("4 forces given for 5 particles"));
+}
+
+TEST_CASE("dem: a script may define granair's force fixes itself; enableFluidForces uses them", "[dem]") {
+    // granair/fluidforce is known to LIGGGHTS from the driver's start (not in
+    // the Debian build: registered by granair), so a script can name it.
+    LiggghtsDriver dem(MPI_COMM_WORLD, test::logDir("script_force_fixes"));
+    dem.runFile(test::script("free_fall.liggghts"));
+    dem.command("fix granairFluidForce all property/atom granairFluidForce vector yes no no 0 0 0");
+    dem.command("fix granair_fluid all granair/fluidforce granairFluidForce");
+    dem.enableFluidForces();
+    int applying = 0;
+    const LAMMPS_NS::Modify& modify = *dem.lammps()->modify;
+    for (int i = 0; i < modify.nfix; ++i)
+        if (std::string(modify.fix[i]->style) == "granair/fluidforce") ++applying;
+    CHECK(applying == 1);
+    std::vector<ParticleState> p;
+    std::vector<double> m;
+    dem.getParticles(p);
+    dem.getParticleMasses(m);
+    dem.setFluidForces(holdingForces(m));
+    dem.advance(500);
+    dem.getParticles(p);
+    for (const ParticleState& q : p) CHECK(q.v.norm() < 1e-12);
+
+    // The same id with another style is refused, naming both styles.
+    LiggghtsDriver other(MPI_COMM_WORLD, test::logDir("script_force_fix_style"));
+    other.runFile(test::script("free_fall.liggghts"));
+    other.command("fix granair_fluid all gravity 9.81 vector 0.0 0.0 1.0");
+    CHECK_THROWS_WITH(other.enableFluidForces(), Catch::Matchers::Contains("granair/fluidforce"));
 }
