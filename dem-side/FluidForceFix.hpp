@@ -12,7 +12,7 @@
 // a second per-particle array, fexternal, with no set_arrays() (a new
 // particle inherits the stale entry of its slot), so the store had to be
 // copied into it by a callback every step before FixExternal added it to f:
-// two passes over three arrays per particle-step, 3.1 % of the DEM's time on
+// two passes over three arrays per particle-step, 3.1 % of the run's time on
 // bench/coupled's 1e5-particle column (perf), against one pass here.
 //
 // The style is not in the Debian LIGGGHTS build: registerFluidForceFix()

@@ -36,6 +36,7 @@ import argparse
 import csv
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -140,6 +141,15 @@ def share(r):
             (r["cpu_mapping_s"] + r["cpu_exchange_s"]) / r["cpu_max_s"])
 
 
+def per_repeat(runs, c):
+    """The wall-throughput ratio c / noair of each repeat (its configurations ran back to back, so they saw
+    about the same load) and their median: less swayed by a slow spell than the ratio of the fastest runs."""
+    pairs = [r["throughput"] / n["throughput"] for r, n in zip(runs[c], runs["noair"])]
+    if len(pairs) < 2:
+        return ""
+    return f"; per repeat {', '.join(f'{x:.3f}' for x in pairs)}, median **{statistics.median(pairs):.3f}**"
+
+
 def report(a, runs, load, counts):
     best = {c: min(rs, key=lambda r: r["loop_s"]) for c, rs in runs.items()}
     rows, lines = [], [
@@ -179,7 +189,8 @@ def report(a, runs, load, counts):
             if c in best:
                 lines.append(f"- {what}: **{ratio(c, 'throughput'):.3f}** by wall time, "
                              f"{(best[c]['particle_steps'] / best[c]['cpu_max_s']) / (best['noair']['particle_steps'] / best['noair']['cpu_max_s']):.3f} "
-                             f"by CPU time; DEM time per particle-step {ratio(c, 'dem_s') / ratio(c, 'particle_steps'):.3f}x DEM-only's")
+                             f"by CPU time; DEM time per particle-step {ratio(c, 'dem_s') / ratio(c, 'particle_steps'):.3f}x DEM-only's"
+                             + per_repeat(runs, c))
     if counts:
         z = {c: r["contacts_per_particle"] for c, r in counts.items()}
         lines.append("- contacts per particle (untimed runs, the mean over every coupling step): "
