@@ -33,8 +33,9 @@ A run goes in chunks of --chunk s (log/chunks.json records each one's CPU
 and wall time; --resume goes on from the newest time folder) and ends at
 --end or once half the fill has left, the end of the DEM case's window
 (--until F: the share F; 0.95 for the whole discharge, as ~2.7 % stays on
-the hopper's staircase cells; --past-half: at --end, a steadiness check;
-the window stays the DEM's).
+the hopper's staircase cells; past 80 % out a run also ends once its flow
+has stalled, under 5 % of its mean rate for 0.5 s, gc.two_fluid.stall_time;
+--past-half: at --end, a steadiness check; the window stays the DEM's).
 Per run OUT/b<b>_<air|noair>/: timeseries.csv (1 ms means: t, W [kg/s] through the
 outlet and the open sides below the slot, outlet dp/dz [Pa/m]: the mean over
 the slot's cells of the gradient between the cell centres just above and

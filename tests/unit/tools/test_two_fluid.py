@@ -4,7 +4,7 @@ function-object files: a restart's rows replace the earlier file's from its firs
 time on, a row cut by a killed solver is dropped, the flow and probe series are
 put on the same steps (dp/dz = the weighted mean of the orifice probes' differences
 over their distance, a run with the axis pair moved by its snapshots' offset, the
-orifice row's mean), the share-of-fill time, block means that end at the
+orifice row's mean), the share-of-fill time, the stall stop, block means that end at the
 blocks' ends, and the air pressure on the orifice plane and one b above it from
 the fields of a hand-made plane mesh (plane_pressures, snapshot_offsets)."""
 import os
@@ -68,6 +68,17 @@ with tempfile.TemporaryDirectory() as run:
     check("out_by", two_fluid.out_by(run, 0.09, 1 / 3), 0.010)
     if two_fluid.out_by(run, 0.09, 0.5) is not None:
         failures.append("out_by: half of the fill is not out yet, expected None")
+
+# the stall stop: 10 g/s for 4 s (40 g of a 42 g fill out, 95 % never reached), then
+# 0.1 g/s: stalled once the last 0.5 s carry less than 5 % of 0.5 s at the mean rate,
+# 10 (0.5 - x) + 0.1 x < 0.025 (40 + 0.1 x) / (4 + x) [g], x > 0.4826 s after the drop
+tt = np.arange(1, 6001) * 1e-3
+ww = np.where(tt <= 4.0, 1e-2, 1e-4)
+check("stall_time", two_fluid.stall_time(tt, ww, 42.0), 4.483, 1.5e-3)
+# the same trickle before 80 % is out (an arch over the slot at half out): no stop
+check("stall_time: under 80 % out", two_fluid.stall_time(tt, ww, 100.0) is None, True)
+# a steady flow never stalls
+check("stall_time: steady", two_fluid.stall_time(tt, np.full_like(tt, 1e-2), 60.0) is None, True)
 
 # a run with the axis pair only: its dp/dz plus the snapshots' mean-minus-axis offset,
 # linear in time between them and held beyond
