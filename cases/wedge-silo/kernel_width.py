@@ -4,7 +4,7 @@ the same fill, the same cells, the air run with the kernel's width times each
 factor, and the dry run once; W, the outlet and above pressures and gradients
 over the study's steady window.
 
-    kernel_width.py [--size demo|study] [--b 10] [--factors 0.5 1 2] [--out DIR] [--results DIR]
+    kernel_width.py [--size demo|study] [--b 10] [--factors 0.5 1 2] [--dry-w W] [--out DIR] [--results DIR]
 
 Why: the two-fluid level's outlet dp/dz is checked against DEM-CFD's (within
 20 %), and DEM-CFD's is a gradient of a void fraction smoothed over 1.6
@@ -13,9 +13,13 @@ as wide). If the reference moves with the smoothing, the target carries that
 uncertainty. The cells stay (study.py makes them as wide as the kernel): only
 couplingProperties' `width` changes.
 
+--dry-w W: the dry rate [kg/s] from a committed reference of the same set-up
+(e.g. reference-study-b10's b10_noair) instead of running it (~15 CPU-min
+at study size).
+
 Run folders in OUT (default build/kernel-width-<size>-b<b>; a finished run is
 kept and read again); RESULTS/kernel_width.{md,csv} (default
-cases/wedge-silo/reference-kernel-width).
+cases/wedge-silo/reference-kernel-width/<size>-b<b>).
 """
 import argparse
 import os
@@ -81,9 +85,11 @@ def main():
     ap.add_argument("--size", default="demo", choices=sorted(P.SIZES))
     ap.add_argument("--b", type=int, default=10, choices=[5, 10, 15])
     ap.add_argument("--factors", type=float, nargs="+", default=[0.5, 1.0, 2.0])
+    ap.add_argument("--dry-w", type=float, default=None, help="dry rate [kg/s] from a reference, not run")
     ap.add_argument("--out", default=None)
-    ap.add_argument("--results", default=os.path.join(HERE, "reference-kernel-width"))
+    ap.add_argument("--results", default=None, help="default reference-kernel-width/<size>-b<b>")
     a = ap.parse_args()
+    a.results = a.results or os.path.join(HERE, "reference-kernel-width", f"{a.size}-b{a.b}")
     if any(not f > 0 for f in a.factors):
         ap.error(f"--factors {a.factors}: expected factors > 0 of the kernel's width")
     build = os.environ.get("GRANAIR_BUILD", os.path.join(HERE, "..", "..", "build"))
@@ -93,8 +99,11 @@ def main():
         study(a, "--stage", "fill")
     if not (os.path.exists(os.path.join(work, "air")) and os.path.exists(os.path.join(work, "noair"))):
         study(a, "--stage", "runs", "--setup-only")
-    run(os.path.join(work, "noair"))
-    dry = rates(os.path.join(work, "noair"))
+    if a.dry_w is None:
+        run(os.path.join(work, "noair"))
+        dry = rates(os.path.join(work, "noair"))
+    else:
+        dry = dict(W_kg_s=a.dry_w, window="(given: --dry-w)")
     print(f"kernel_width: dry W {dry['W_kg_s']:.4f} kg/s ({dry['window']} s)", flush=True)
     rows = []
     for f in a.factors:
@@ -111,8 +120,9 @@ def main():
     gc.series.write_csv(os.path.join(a.results, "kernel_width.csv"), [(c, [r[c] for r in rows]) for c in cols],
                         ["{}" if c == "window" else "{:.6g}" for c in cols])
     lines = [f"# DEM-CFD against the void-fraction kernel's width ({a.size}, b = {a.b} mm)", "",
-             f"`kernel_width.py --size {a.size} --b {a.b} --factors {' '.join(f'{f:g}' for f in a.factors)}`: one fill, "
-             f"the same cells; dry W {dry['W_kg_s']:.4f} kg/s over {dry['window']} s.", "",
+             f"`kernel_width.py --size {a.size} --b {a.b} --factors {' '.join(f'{f:g}' for f in a.factors)}"
+             f"{f' --dry-w {a.dry_w:g}' if a.dry_w else ''}`: one fill, "
+             f"the same cells; dry W {dry['W_kg_s']:.4f} kg/s ({dry['window']}).", "",
              "| width factor | width [mm] | W [kg/s] | air effect | outlet dp/dz [Pa/m] | outlet p [Pa] | "
              "p one b above [Pa] | dp/dz one b above [Pa/m] |", "|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
