@@ -12,14 +12,17 @@
 # --steps coupling steps (50 DEM steps each) on --np ranks, --repeat times
 # each, then report.py writes <results>/<name>.{md,csv} (default coupled). Needs a build with
 # OpenFOAM and LIGGGHTS (build/bin/granairFoam; GRANAIR_BUILD overrides).
-# Work folders default to build/bench-coupled; results to bench/results.
+# Work folders default to build/bench-coupled-np<np> (one per rank count: a
+# 2-rank run would otherwise replace the 1-rank run's folders); the run
+# folders of an earlier call there are removed first, as report.py reads
+# every run folder it finds. Results go to bench/results.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 # shellcheck source=../../tools/case-lib.sh
 . "$here/../../tools/case-lib.sh"
 
 sizes="1000 10000 100000" steps=20 np=2 repeat=1 name=coupled configs="off forces-off on"
-work="$GRANAIR_BUILD/bench-coupled" results="$here/../results"
+work="" results="$here/../results"
 while [ $# -gt 0 ]; do
   case $1 in
     --sizes) sizes=$2; shift 2 ;;
@@ -36,7 +39,9 @@ while [ $# -gt 0 ]; do
 done
 command -v granairFoam >/dev/null || { echo "bench/coupled: granairFoam not found in $GRANAIR_BUILD/bin" >&2; exit 1; }
 
+work=${work:-$GRANAIR_BUILD/bench-coupled-np$np}
 mkdir -p "$work"
+rm -rf "$work"/[0-9]*_*_[0-9]*
 echo "$(date -u +%Y-%m-%dT%H:%MZ), $(nproc) cores, load average at start $(cut -d' ' -f1-3 /proc/loadavg)" \
   > "$work/machine.txt"
 # Repeats outermost and the configurations of a size back to back, so they see the same load.
