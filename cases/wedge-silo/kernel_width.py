@@ -102,9 +102,10 @@ def main():
     if a.dry_w is None:
         run(os.path.join(work, "noair"))
         dry = rates(os.path.join(work, "noair"))
+        dry["window"] += " s"
     else:
-        dry = dict(W_kg_s=a.dry_w, window="(given: --dry-w)")
-    print(f"kernel_width: dry W {dry['W_kg_s']:.4f} kg/s ({dry['window']} s)", flush=True)
+        dry = dict(W_kg_s=a.dry_w, window="given by --dry-w")
+    print(f"kernel_width: dry W {dry['W_kg_s']:.4f} kg/s ({dry['window']})", flush=True)
     rows = []
     for f in a.factors:
         d = os.path.join(work, f"air_w{f:g}")
