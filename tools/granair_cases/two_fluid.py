@@ -11,6 +11,8 @@ and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-flui
     ends, means = block_means(t, dt, [w, dpdz, alpha], block)     their means over blocks of time
     plane_pressures(run_dir, b, dx, t0, t1, rho_f, g)            p and dp/dz at the orifice and b above (fields)
     out_by(run_dir, fill_g, share)                               when that share of the fill had left
+    stall_time(t, rate, fill_g)                                  when a discharge stalled (past 80 % out)
+    run_end(run_dir, fill_g, until)                              a chunked run's stop: (share out, stalled)
     closure(phi_fill)                                            the frictional closure's numbers
     friction(values)                                             its entry in turbulenceProperties.particles
 
@@ -190,18 +192,34 @@ def read_series(run, name, file, columns):
     return np.concatenate(rows)
 
 
-def out_by(run, fill_g, share):
-    """The time the share of the fill [g] had left (0.5: the DEM window's end), or
-    None: from the outlet and free-fall flow files as far as they are written (a
-    file caught mid-row is read again at the next poll)."""
+def out_flow(run):
+    """t [s] and the rate [kg/s] out through the outlet and the free-fall sides, as
+    far as both files are written (a file caught mid-row is read again at the next
+    poll), or None before they exist."""
     try:
         o, f = (read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2) for patch in OUT_PATCHES)
     except (ValueError, CaseError):
         return None
     n = min(len(o), len(f))
-    out = np.cumsum((o[:n, 1] + f[:n, 1]) * _series.step_lengths(o[:n, 0]))
-    k = np.nonzero(out >= share * 1e-3 * fill_g)[0]
-    return float(o[k[0], 0]) if k.size else None
+    return o[:n, 0], o[:n, 1] + f[:n, 1]
+
+
+def mass_out(t, rate):
+    """The mass out since t = 0 [kg] at each row (row i covers (t[i-1], t[i]])."""
+    return np.cumsum(np.asarray(rate, float) * _series.step_lengths(np.asarray(t, float)))
+
+
+def share_time(t, rate, fill_g, share):
+    """The time the share of the fill [g] had left, or None."""
+    k = np.nonzero(mass_out(t, rate) >= share * 1e-3 * fill_g)[0]
+    return float(t[k[0]]) if k.size else None
+
+
+def out_by(run, fill_g, share):
+    """The time the share of the fill [g] had left (0.5: the DEM window's end), or
+    None: from the outlet and free-fall flow files as far as they are written."""
+    flow = out_flow(run)
+    return None if flow is None else share_time(*flow, fill_g, share)
 
 
 def stall_time(t, rate, fill_g, after=0.8, window=0.5, below=0.05):
@@ -213,24 +231,25 @@ def stall_time(t, rate, fill_g, after=0.8, window=0.5, below=0.05):
     stay on the hopper's staircase cells (b = 15 mm on b/4: stopped by hand;
     its tails carried 0.7-2.7 % of the mean rate, dry and with air: this stops
     them at 2.1 s dry and 2.3 s with air, 91 and 93 % out)."""
-    t, rate = np.asarray(t, float), np.asarray(rate, float)
+    t = np.asarray(t, float)
     if t.size < 2:
         return None
-    out = np.cumsum(rate * _series.step_lengths(t))          # mass out since t = 0 [kg]
+    out = mass_out(t, rate)
     k = np.nonzero((out >= after * 1e-3 * fill_g) & (t >= window))[0]
     recent = out[k] - np.interp(t[k] - window, t, out)
     hit = k[recent < below * window * out[k] / t[k]]
     return float(t[hit[0]]) if hit.size else None
 
 
-def stalled(run, fill_g):
-    """stall_time() of a run's outlet and free-fall flows as far as they are written, or None."""
-    try:
-        o, f = (read_series(run, f"{patch}Flow", "surfaceFieldValue.dat", 2) for patch in OUT_PATCHES)
-    except (ValueError, CaseError):
-        return None
-    n = min(len(o), len(f))
-    return stall_time(o[:n, 0], o[:n, 1] + f[:n, 1], fill_g)
+def run_end(run, fill_g, until):
+    """(the time the share `until` of the fill had left, the time the discharge
+    stalled) of a run so far, each or None (the stall only while the share is
+    not out): the run's stop, from one read of its flow files."""
+    flow = out_flow(run)
+    if flow is None:
+        return None, None
+    done = share_time(*flow, fill_g, until)
+    return done, None if done is not None else stall_time(*flow, fill_g)
 
 
 def orifice_probes(xs, dz, y=0.0):
@@ -496,11 +515,11 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
         print(f"{label}: {t0:g} -> {t1:g} s" + (f" ({n_outer} outer correctors)" if n_outer != values["N_OUTER"] else ""),
               flush=True)
         cpu = runner.run(["twoPhaseEulerFoam"], run_dir, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
-                         stop_when=None if past_half else
-                         lambda: out_by(run_dir, fill_g, until) is not None or stalled(run_dir, fill_g) is not None,
+                         stop_when=None if past_half else lambda: run_end(run_dir, fill_g, until) != (None, None),
                          poll=20.0)
-        got, half = foam.time_dirs(run_dir)[-1][0], out_by(run_dir, fill_g, until)
-        stall = None if half is not None or past_half else stalled(run_dir, fill_g)
+        got = foam.time_dirs(run_dir)[-1][0]
+        half, stall = run_end(run_dir, fill_g, until)
+        stall = None if past_half else stall
         if got < t1 - 1e-9 and (half is None and stall is None or past_half):
             raise CaseError(f"{run_dir}: twoPhaseEulerFoam ended without writing t = {t1:g} s (newest: {got:g} s); "
                             f"see log/twoPhaseEulerFoam_{t0:g}-{t1:g}.log")
