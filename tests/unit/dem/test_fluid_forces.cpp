@@ -31,6 +31,16 @@ std::vector<Vec3> holdingForces(const std::vector<double>& masses) {
     return f;
 }
 
+// Sets m_i g upward on every particle of the driver, in the order of a fresh
+// particle list (what setFluidForces uses).
+void holdEveryParticle(LiggghtsDriver& dem) {
+    std::vector<ParticleState> p;
+    std::vector<double> m;
+    dem.getParticles(p);
+    dem.getParticleMasses(m);
+    dem.setFluidForces(holdingForces(m));
+}
+
 }  // namespace
 
 TEST_CASE("dem: an upward fluid force m g holds a sphere still, zero force lets it fall at g",
@@ -68,21 +78,19 @@ TEST_CASE("dem: particles created after setFluidForces start with zero fluid for
     // Particle 1 is held by m g, then deleted; a new particle is created
     // into the same local slot. A per-particle array without set_arrays
     // (LIGGGHTS' fix external, used before) would still hold the old force
-    // there; the stored force must be zero, so the new particle falls at g. Then ten more come from
-    // fix insert/pack during a run (LIGGGHTS' insertion path): they too.
+    // there; the stored force must be zero, so the new particle falls at g.
+    // Then ten more come from fix insert/pack during a run (LIGGGHTS'
+    // insertion path): they too.
     LiggghtsDriver dem(MPI_COMM_WORLD, test::logDir("new_particle_force"));
     dem.runFile(test::script("free_fall.liggghts"));
     dem.enableFluidForces();
-    std::vector<ParticleState> p;
-    std::vector<double> m;
-    dem.getParticles(p);
-    dem.getParticleMasses(m);
-    dem.setFluidForces(holdingForces(m));
+    holdEveryParticle(dem);
     dem.advance(10);
 
     dem.command("delete_atoms group all compress no");
     dem.command("create_atoms 1 single 0.03 0.05 0.12 units box");
     dem.command("set group all diameter 0.002 density 2500");
+    std::vector<ParticleState> p;
     dem.getParticles(p);
     REQUIRE(p.size() == 1);
     CHECK(p[0].x.z() == 0.12);
@@ -212,12 +220,9 @@ TEST_CASE("dem: a script may define granair's force fixes itself; enableFluidFor
     for (int i = 0; i < modify.nfix; ++i)
         if (std::string(modify.fix[i]->style) == "granair/fluidforce") ++applying;
     CHECK(applying == 1);
-    std::vector<ParticleState> p;
-    std::vector<double> m;
-    dem.getParticles(p);
-    dem.getParticleMasses(m);
-    dem.setFluidForces(holdingForces(m));
+    holdEveryParticle(dem);
     dem.advance(500);
+    std::vector<ParticleState> p;
     dem.getParticles(p);
     for (const ParticleState& q : p) CHECK(q.v.norm() < 1e-12);
 
