@@ -32,8 +32,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 import granair_cases as gc  # noqa: E402
 import parameters as P  # noqa: E402
-
-KEYS = ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")
+from study import MONITORS, steady_rates  # noqa: E402  (the figures a study run reports)
 
 
 def study(a, *args):
@@ -51,32 +50,34 @@ def run(d):
 
 
 def widened(src, d, factor):
-    """A copy of the air run src with the kernel's width times factor; the width used [m]."""
-    if not os.path.exists(os.path.join(d, "done")):
-        shutil.rmtree(d, ignore_errors=True)
-        shutil.copytree(src, d)
+    """A copy of the air run src with the kernel's width times factor (kept as it is
+    once run); the width used [m]."""
     props = os.path.join(d, "constant", "couplingProperties")
+    if os.path.exists(os.path.join(d, "done")):
+        return float(_width(props).group(2))
+    shutil.rmtree(d, ignore_errors=True)
+    shutil.copytree(src, d)
+    m = _width(props)
+    width = float(m.group(2)) * factor
+    with open(props, "w") as fh:
+        fh.write(m.string[:m.start(2)] + f"{width:.9g}" + m.string[m.end(2):])
+    return width
+
+
+def _width(props):
+    """The match of the voidFraction block's width in couplingProperties (group 2: the value)."""
     with open(props) as fh:
-        text = fh.read()
-    m = re.search(r"(voidFraction\s*\{[^}]*\bwidth\s+)([^;\s]+)", text)
+        m = re.search(r"(voidFraction\s*\{[^}]*\bwidth\s+)([^;\s]+)", fh.read())
     if not m:
         raise gc.CaseError(f"{props}: no voidFraction width")
-    if not os.path.exists(os.path.join(d, "done")):
-        width = float(m.group(2)) * factor
-        with open(props, "w") as fh:
-            fh.write(text[:m.start(2)] + f"{width:.9g}" + text[m.end(2):])
-        return width
-    return float(m.group(2))
+    return m
 
 
-def rates(d):
-    """W over the steady window and the monitors' means there."""
+def rates(d, air):
+    """W over the steady window and, with air, the monitors' means there (study.py's)."""
     r = gc.powder.dem(d)
-    s, t = r["series"], r["t"]
-    t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
-    out = dict(window=f"{t0:.3f}-{t1:.3f}", W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1))
-    for k in KEYS:
-        out[k] = gc.series.time_mean(t, s[k], t0, t1) if k in s else 0.0
+    out = steady_rates(r["t"], r["series"], air)
+    out["window"] = f"{out['steady_from_s']:.3f}-{out['steady_to_s']:.3f}"
     return out
 
 
@@ -101,7 +102,7 @@ def main():
         study(a, "--stage", "runs", "--setup-only")
     if a.dry_w is None:
         run(os.path.join(work, "noair"))
-        dry = rates(os.path.join(work, "noair"))
+        dry = rates(os.path.join(work, "noair"), air=False)
         dry["window"] += " s"
     else:
         dry = dict(W_kg_s=a.dry_w, window="given by --dry-w")
@@ -111,13 +112,13 @@ def main():
         d = os.path.join(work, f"air_w{f:g}")
         width = widened(os.path.join(work, "air"), d, f)
         run(d)
-        r = dict(factor=f, width_mm=1e3 * width, **rates(d))
+        r = dict(factor=f, width_mm=1e3 * width, **rates(d, air=True))
         r["air_effect_pct"] = 100 * (r["W_kg_s"] / dry["W_kg_s"] - 1)
         rows.append(r)
         print(f"kernel_width: x{f:g} ({r['width_mm']:.3g} mm): W {r['W_kg_s']:.4f} kg/s ({r['air_effect_pct']:+.1f} %), "
               f"outlet dp/dz {r['outlet_dpdz_Pa_m']:.0f} Pa/m", flush=True)
     os.makedirs(a.results, exist_ok=True)
-    cols = ["factor", "width_mm", "window", "W_kg_s", "air_effect_pct"] + list(KEYS)
+    cols = ["factor", "width_mm", "window", "W_kg_s", "air_effect_pct"] + list(MONITORS)
     gc.series.write_csv(os.path.join(a.results, "kernel_width.csv"), [(c, [r[c] for r in rows]) for c in cols],
                         ["{}" if c == "window" else "{:.6g}" for c in cols])
     lines = [f"# DEM-CFD against the void-fraction kernel's width ({a.size}, b = {a.b} mm)", "",

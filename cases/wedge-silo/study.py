@@ -312,6 +312,20 @@ def fill_stats(fill_dir, v):
                 beverloo_kg_s=beverloo[0], beverloo_parcel_kg_s=beverloo[1], case=v)
 
 
+MONITORS = ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")   # granairFoam's air monitors
+
+
+def steady_rates(t, s, air):
+    """The steady window (t0, t1) of a run's series s (gc.powder.dem), W over it
+    [kg/s] and, with air, the monitors' means there: the figures a run reports
+    (kernel_width.py reads its runs with this too)."""
+    t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
+    out = dict(steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1))
+    if air:
+        out.update({k: gc.series.time_mean(t, s[k], t0, t1) for k in MONITORS})
+    return out
+
+
 def post_run(d, res, name):
     """One run: results CSV, steady rates and means, the air volume balance, fields."""
     with open(os.path.join(d, "case.json")) as fh:
@@ -326,16 +340,13 @@ def post_run(d, res, name):
     # the bed height holding what is still above the orifice at the fill's bulk density
     level = P.fill_level(2 * v["B"], fill["mass_full_depth_kg"] - s["discharged_kg"], fill["rho_b"])
     gc.series.write_csv(os.path.join(res, f"{name}.csv"), [("t", t), ("mass_flow_kg_s", s["mass_flow_kg_s"])] + [
-        (k, s.get(k, zero)) for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m")] + [
+        (k, s.get(k, zero)) for k in MONITORS] + [
         ("discharged_kg", s["discharged_kg"]), ("particles", s["particles"]), ("fill_level_m", level)])
-    t0, t1 = gc.series.steady_window(t, s["particles"], P.STEADY_FROM)
     out = dict(name=name, b_mm=v["B_MM"], air=air, s=v["S"], size=v["SIZE"], np=v["NP"], t_end=float(t[-1]),
-               steady_from_s=t0, steady_to_s=t1, W_kg_s=gc.series.slope(t, s["discharged_kg"], t0, t1),
+               **steady_rates(t, s, air),
                balance=r["balance"], whole=bool(chunks), full_depth=bool(v.get("FULL_DEPTH")), rolling=f", rolling friction {v['ROLLING'].split()[-1]} mu_r = "
                f"{v['ROLLING_MU']:g}" if v.get("ROLLING") else "", field_times=[x for x in field_times(v) if gc.foam.time_dir(d, x)])
     if air:
-        for k in ("outlet_dpdz_Pa_m", "outlet_p_Pa", "above_p_Pa", "above_dpdz_Pa_m"):
-            out[k] = gc.series.time_mean(t, s[k], t0, t1)
         first = np.argmax(s["discharged_kg"] > 0)        # "while discharging": from the first discharged particle on
         out["outlet_p_mean_discharging_Pa"] = float(np.mean(s["outlet_p_Pa"][first:]))
         # the air volume balance of the silo above the orifice up to the last field time
