@@ -15,7 +15,6 @@ namespace granair::dem {
 FluidForceStore::FluidForceStore(LAMMPS_NS::LAMMPS* lmp) : lmp_(lmp) {
     // The store first: the force fix reads it.
     ensurePropertyAtom(lmp_, propertyFixId, 3, 0.0);
-    registerFluidForceFix(lmp_);  // done by LiggghtsDriver too; idempotent
     if (!findFix(lmp_, forceFixId, fluidForceFixStyle)) {
         const std::string cmd = std::string("fix ") + forceFixId + " all " + fluidForceFixStyle + " " + propertyFixId;
         lammps_command(lmp_, cmd.c_str());

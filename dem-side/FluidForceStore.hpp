@@ -25,7 +25,8 @@ public:
     static constexpr const char* forceFixId = "granair_fluid";
 
     // Creates the fixes if missing. Collective over the LIGGGHTS
-    // communicator (issues LIGGGHTS commands).
+    // communicator (issues LIGGGHTS commands). The granair/fluidforce style
+    // must be known to lmp: LiggghtsDriver registers it when it opens LIGGGHTS.
     explicit FluidForceStore(LAMMPS_NS::LAMMPS* lmp);
 
     // Find both fixes again: a script command may have re-created them.
