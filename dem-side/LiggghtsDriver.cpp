@@ -330,7 +330,15 @@ ParticleState LiggghtsDriver::LocalParticles::operator[](std::size_t i) const {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     ParticleState p;
     p.id = atom.tag[i];
-    double x[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
+    p.x = position(i);
+    p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
+    p.radius = atom.radius[i];
+    return p;
+}
+
+Vec3 LiggghtsDriver::LocalParticles::position(std::size_t i) const {
+    const double* xi = lmp_->atom->x[i];
+    double x[3] = {xi[0], xi[1], xi[2]};
     // In a periodic box LIGGGHTS wraps a particle that crossed a periodic
     // face only at the next re-neighbouring, so in between its centre may lie
     // up to half the skin outside the box (and outside the CFD mesh, which
@@ -344,10 +352,16 @@ ParticleState LiggghtsDriver::LocalParticles::operator[](std::size_t i) const {
                                       x[2] >= lo_[2] && x[2] < hi_[2])) &&
         allFinite3(x))
         lmp_->domain->remap(x);
-    p.x = Vec3(x[0], x[1], x[2]);
-    p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
-    p.radius = atom.radius[i];
-    return p;
+    return Vec3(x[0], x[1], x[2]);
+}
+
+std::int64_t LiggghtsDriver::LocalParticles::id(std::size_t i) const { return lmp_->atom->tag[i]; }
+
+double LiggghtsDriver::LocalParticles::radius(std::size_t i) const { return lmp_->atom->radius[i]; }
+
+Vec3 LiggghtsDriver::LocalParticles::velocity(std::size_t i) const {
+    const double* v = lmp_->atom->v[i];
+    return Vec3(v[0], v[1], v[2]);
 }
 
 void LiggghtsDriver::getParticles(std::vector<ParticleState>& out) {

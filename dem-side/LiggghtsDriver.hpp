@@ -145,6 +145,10 @@ private:
     public:
         std::size_t size() const override { return n_; }
         ParticleState operator[](std::size_t i) const override;
+        Vec3 position(std::size_t i) const override;
+        std::int64_t id(std::size_t i) const override;
+        double radius(std::size_t i) const override;
+        Vec3 velocity(std::size_t i) const override;
 
     private:
         friend class LiggghtsDriver;

@@ -11,10 +11,7 @@
 namespace granair {
 
 // Parcel volume [m3] from its radius.
-static double volume(const ParticleState& p) {
-    const double r = p.radius;
-    return 4.0 / 3.0 * M_PI * r * r * r;
-}
+static double volume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
 
 CouplingStep::CouplingStep(const CouplingSettings& settings, const CellLocator& mesh, FluidProperties fluid)
     : settings_(settings), mesh_(mesh), fluid_(fluid) {
@@ -30,7 +27,7 @@ void CouplingStep::voidFraction(const OwnedParticles& owned, double* eps) {
     if (centreOnly_) {
         offset_.clear();
         solid_.assign(nCells, 0.0);
-        for (std::size_t p = 0; p < np; ++p) solid_[owned.cell(p)] += 1.0 * volume(owned.state(p));
+        for (std::size_t p = 0; p < np; ++p) solid_[owned.cell(p)] += 1.0 * volume(owned.radius(p));
     } else if (!buildStencils(owned)) {
         // A stencil spans more than 16 bits of cell numbers: plain indices
         // from now on on this rank (the step's stencils built again).
@@ -73,13 +70,15 @@ void CouplingStep::particlesToCells(const OwnedParticles& owned, const double* U
             uf += w * Vec3(Ucell[3 * c], Ucell[3 * c + 1], Ucell[3 * c + 2]);
             epsP += w * eps[c];
         });
-        const ParticleState& ps = owned.state(p);
-        const double dParcel = 2.0 * ps.radius;
+        // Radius and velocity only (the whole state for an error message).
+        const Vec3 v = owned.velocity(p);
+        const double dParcel = 2.0 * owned.radius(p);
         double b = 0.0;
         if (settings_.dragForce) {
             try {
-                b = parcelBeta(*settings_.drag, dParcel, s, epsP, (uf - ps.v).norm(), fluid_);
+                b = parcelBeta(*settings_.drag, dParcel, s, epsP, (uf - v).norm(), fluid_);
             } catch (const InputError& e) {
+                const ParticleState ps = owned.state(p);
                 fail<InputError>("particle ", ps.id, " at (", ps.x.transpose(),
                                  "): ", e.what());
             }
@@ -88,7 +87,7 @@ void CouplingStep::particlesToCells(const OwnedParticles& owned, const double* U
         forEachWeight(owned, p, [&](int c, double w) {
             const double wb = w * b;
             sumBeta_[c] += wb;
-            for (int a = 0; a < 3; ++a) Us[3 * c + a] += wb * ps.v[a];
+            for (int a = 0; a < 3; ++a) Us[3 * c + a] += wb * v[a];
         });
     }
     for (int c = 0; c < nCells; ++c) {
@@ -128,7 +127,7 @@ bool CouplingStep::buildStencils(const OwnedParticles& owned) {
     constexpr int maxDelta = std::numeric_limits<std::int16_t>::max();
     for (std::size_t p = 0; p < np; ++p) {
         const ParticleState& ps = owned.state(p);
-        const double vp = volume(ps);
+        const double vp = volume(ps.radius);
         const int centre = owned.cell(p);
         settings_.voidFraction->stencil(mesh_, ps, centre, scratch_);
         if (scratch_.empty() || scratch_.front().cell != centre)
@@ -182,9 +181,8 @@ void CouplingStep::Forces::operator()(std::size_t p, double* f, double* drag) co
         uf += w * Vec3(U_[3 * c], U_[3 * c + 1], U_[3 * c + 2]);
         gp += w * Vec3(gradP_[3 * c], gradP_[3 * c + 1], gradP_[3 * c + 2]);
     });
-    const ParticleState& ps = owned_.state(p);
-    const double vp = volume(ps);
-    const Vec3 fd = st.beta_[p] * (uf - ps.v);
+    const double vp = volume(owned_.radius(p));
+    const Vec3 fd = st.beta_[p] * (uf - owned_.velocity(p));
     Vec3 force = fd;
     if (st.settings_.pressureGradientForce) force -= vp * gp;
     if (st.settings_.buoyancyForce) force += vp * buoyancyPerVolume_;

@@ -303,14 +303,17 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const ParticleList&
     selfCell.resize(nSelf);
     std::size_t mi = 0;
     for (std::size_t j = 0; j < nSelf; ++j) {
-        const ParticleState p = dem[static_cast<std::size_t>(selfDemAt(j))];
-        int cell = mesh.findCellNear(p.x, selfHints.lastCell(j, p.id));
+        // Position and tag only: findCandidates() read and checked the rest.
+        const std::size_t i = static_cast<std::size_t>(selfDemAt(j));
+        const Vec3 x = dem.position(i);
+        const std::int64_t id = dem.id(i);
+        int cell = mesh.findCellNear(x, selfHints.lastCell(j, id));
         if (cell < 0) {
             ++stats.hintMisses;
-            cell = mesh.findCellNear(p.x, hint);
+            cell = mesh.findCellNear(x, hint);
             if (cell < 0) {
                 ++stats.globalSearches;
-                cell = mesh.findCell(p.x, -1);
+                cell = mesh.findCell(x, -1);
             }
         }
         selfCell[j] = cell;
@@ -318,7 +321,7 @@ void ParticleExchange::Impl::locate(const CellLocator& mesh, const ParticleList&
         const bool isMulti = mi < selfMultiPos.size() && selfMultiPos[mi] == static_cast<int>(j);
         mi += isMulti;
         if (cell < 0 && !isMulti)
-            pr.outsideMesh("particle ", p.id, " at ", show(p.x), " is outside the CFD mesh (in rank ", rank,
+            pr.outsideMesh("particle ", id, " at ", show(x), " is outside the CFD mesh (in rank ", rank,
                            "'s CFD box but in none of its cells)");
     }
     stats.reordered = selfHints.sortedLookups();
@@ -457,7 +460,7 @@ void ParticleExchange::Impl::buildRoutes(const ParticleList& dem, OwnedParticles
     // This rank's own particles need no route: backward() walks the self
     // records, which from here on are the ones this rank owns.
     dropUnownedSelf(dem.size());
-    selfHints.endStep(nSelf, [&](std::size_t j) { return dem[static_cast<std::size_t>(selfDemAt(j))].id; });
+    selfHints.endStep(nSelf, [&](std::size_t j) { return dem.id(static_cast<std::size_t>(selfDemAt(j))); });
 
     // The owned list, by source rank (this rank in its place): own particles
     // read from the self records, inbound records decoded.

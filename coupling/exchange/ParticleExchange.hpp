@@ -70,6 +70,17 @@ public:
         if (s < selfCount_) return (*local_)[selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s];
         return remote_[k < selfBegin_ ? k : k - selfCount_];
     }
+    // state(k)'s radius and velocity alone (ParticleList::radius, velocity).
+    double radius(std::size_t k) const {
+        const std::size_t s = k - selfBegin_;
+        if (s < selfCount_) return local_->radius(selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s);
+        return remote_[k < selfBegin_ ? k : k - selfCount_].radius;
+    }
+    Vec3 velocity(std::size_t k) const {
+        const std::size_t s = k - selfBegin_;
+        if (s < selfCount_) return local_->velocity(selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s);
+        return remote_[k < selfBegin_ ? k : k - selfCount_].v;
+    }
     int cell(std::size_t k) const {
         const std::size_t s = k - selfBegin_;
         if (s < selfCount_) return (*selfCell_)[s];

@@ -38,6 +38,15 @@ TEST_CASE("dem: getParticles wraps positions into a periodic box", "[dem]") {
     CHECK(p[0].x.y() == 0.05);
     CHECK(p[0].x.z() == 0.05);
     CHECK(p[0].v.x() == 1.0);
+    // The one-field reads the mapping passes use give the same values
+    // (position wrapped likewise).
+    const ParticleList& list = dem.particles();
+    CHECK(list.position(0).x() == p[0].x.x());
+    CHECK(list.position(0).y() == p[0].x.y());
+    CHECK(list.id(0) == p[0].id);
+    CHECK(list.radius(0) == p[0].radius);
+    CHECK(list.velocity(0).x() == 1.0);
+    CHECK(list.velocity(0).y() == p[0].v.y());
 }
 
 TEST_CASE("dem: a non-finite centre along a periodic dimension is reported, not wrapped", "[dem]") {
