@@ -67,24 +67,20 @@ public:
     bool empty() const { return size() == 0; }
     ParticleState state(std::size_t k) const {
         const std::size_t s = k - selfBegin_;  // wraps around for k < selfBegin_
-        if (s < selfCount_) return (*local_)[selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s];
-        return remote_[k < selfBegin_ ? k : k - selfCount_];
+        return s < selfCount_ ? (*local_)[demIndex(s)] : remote_[remoteIndex(k)];
     }
     // state(k)'s radius and velocity alone (ParticleList::radius, velocity).
     double radius(std::size_t k) const {
         const std::size_t s = k - selfBegin_;
-        if (s < selfCount_) return local_->radius(selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s);
-        return remote_[k < selfBegin_ ? k : k - selfCount_].radius;
+        return s < selfCount_ ? local_->radius(demIndex(s)) : remote_[remoteIndex(k)].radius;
     }
     Vec3 velocity(std::size_t k) const {
         const std::size_t s = k - selfBegin_;
-        if (s < selfCount_) return local_->velocity(selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s);
-        return remote_[k < selfBegin_ ? k : k - selfCount_].v;
+        return s < selfCount_ ? local_->velocity(demIndex(s)) : remote_[remoteIndex(k)].v;
     }
     int cell(std::size_t k) const {
         const std::size_t s = k - selfBegin_;
-        if (s < selfCount_) return (*selfCell_)[s];
-        return remoteCell_[k < selfBegin_ ? k : k - selfCount_];
+        return s < selfCount_ ? (*selfCell_)[s] : remoteCell_[remoteIndex(k)];
     }
     OwnedParticle operator[](std::size_t k) const { return {state(k), cell(k)}; }
 
@@ -114,6 +110,10 @@ public:
 
 private:
     friend class ParticleExchange;
+    // Own particle s (0 <= s < selfCount_): its index in the dem list.
+    std::size_t demIndex(std::size_t s) const { return selfDem_ ? static_cast<std::size_t>((*selfDem_)[s]) : s; }
+    // Owned particle k, not an own one: its index in remote_ and remoteCell_.
+    std::size_t remoteIndex(std::size_t k) const { return k < selfBegin_ ? k : k - selfCount_; }
     void addRemote(const ParticleState& p, int cell);
     // The own particles: owned[selfBegin_ .. selfBegin_ + selfCount_) are
     // (*local_)[(*selfDem_)[s]] (selfDem_ null: [s]) in cell (*selfCell_)[s];
