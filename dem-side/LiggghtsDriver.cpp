@@ -327,12 +327,12 @@ const ParticleList& LiggghtsDriver::particles() {
 }
 
 ParticleState LiggghtsDriver::LocalParticles::operator[](std::size_t i) const {
-    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    // The one-field reads below, together (the class is final: direct calls).
     ParticleState p;
-    p.id = atom.tag[i];
+    p.id = id(i);
     p.x = position(i);
-    p.v = Vec3(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
-    p.radius = atom.radius[i];
+    p.v = velocity(i);
+    p.radius = radius(i);
     return p;
 }
 
