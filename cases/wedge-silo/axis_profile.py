@@ -3,7 +3,8 @@
 the powder's vertical velocity and its frictional pressure against height
 above the orifice, averaged over written times (issue 17's mesh study).
 
-    axis_profile.py --run LABEL=RUN_DIR[@T1,T2,...] [--run ...] [--b 10] [--times 0.5 1 1.5] [--out DIR]
+    axis_profile.py --run LABEL=RUN_DIR[@T1,T2,...] [--run ...] [--b 10]
+                    [--times 0.5 1 1.5 | --at-mass G1 G2 ...] [--out DIR]
 
 Why: the calibrated two-fluid's dry rate falls by a quarter from 4 to 6
 cells across the slot at b = 10 mm (README, "At b = 10 mm on b/6") while
@@ -15,9 +16,10 @@ RUN_DIR is a two-fluid run folder (twofluid.py's OUT/runs/b<B>_air or
 _noair: time folders of alpha.particles, U.particles, pf.particles on an
 ASCII mesh); fields are interpolated linearly between cell centres onto
 x = 0 (gc.foam.line_profile) from z = -b/2 to 4b, and averaged over
---times, or over the run's own times after `@` (e.g. the times at which
-each run has discharged the same mass: a faster run's fill is lower at a
-given time). Writes
+--times, over the run's own times after `@`, or (--at-mass) over the
+written times nearest to those at which each run had discharged G1, G2, ...
+grams (a faster run's fill is lower at a given time; from its outlet and
+free-fall flow files, gc.two_fluid.out_flow). Writes
 DIR/axis_profile.{csv,md,png} (default build/axis-profile).
 """
 import argparse
@@ -44,11 +46,29 @@ def profile(run, times, z):
     return {c: v / len(times) for c, v in sums.items()}
 
 
+def mass_times(run, grams):
+    """The written times of a run nearest to those at which it had discharged each of `grams`."""
+    flow = gc.two_fluid.out_flow(run)
+    if flow is None:
+        raise gc.CaseError(f"{run}: no outlet and free-fall flow files (postProcessing/*Flow)")
+    t, rate = flow
+    out = gc.two_fluid.mass_out(t, rate)
+    written = np.array([tt for tt, _ in gc.foam.time_dirs(run)])
+    picked = []
+    for g in grams:
+        if not out[-1] >= g * 1e-3:
+            raise gc.CaseError(f"{run}: {out[-1] * 1e3:.1f} g out by t = {t[-1]:g} s, not {g:g} g")
+        picked.append(float(written[np.argmin(np.abs(written - np.interp(g * 1e-3, out, t)))]))
+    return picked
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--run", action="append", required=True, metavar="LABEL=RUN_DIR[@T1,T2,...]")
     ap.add_argument("--b", type=float, default=10.0, help="slot width [mm] (default 10)")
     ap.add_argument("--times", type=float, nargs="+", default=[0.5, 1.0, 1.5])
+    ap.add_argument("--at-mass", type=float, nargs="+", metavar="G",
+                    help="each run's written times nearest to G grams discharged (instead of --times)")
     ap.add_argument("--out", default=os.path.join(HERE, "..", "..", "build", "axis-profile"))
     a = ap.parse_args()
     runs, times = [], {}
@@ -58,9 +78,12 @@ def main():
         if not sep or not os.path.isdir(path):
             ap.error(f"--run {item}: expected LABEL=RUN_DIR[@T1,T2,...] with an existing run folder")
         try:
-            times[label] = [float(t) for t in own.split(",")] if at else a.times
+            times[label] = ([float(t) for t in own.split(",")] if at else
+                            mass_times(path, a.at_mass) if a.at_mass else a.times)
         except ValueError:
             ap.error(f"--run {item}: expected times [s] after @, separated by commas")
+        except gc.CaseError as e:
+            ap.error(f"--run {item}: {e}")
         runs.append((label, path))
     b = a.b * 1e-3
     z = np.arange(-0.5 * b, 4.0 * b + 1e-12, 0.05 * b)
