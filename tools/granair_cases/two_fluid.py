@@ -318,19 +318,34 @@ def plane_pressures(run, b, dx, t0, t1, rho_f, g, patch="frontAndBack"):
     (outlet_p_Pa, outlet_dpdz_Pa_m, above_p_Pa, above_dpdz_Pa_m, snapshots),
     or None when no field was written in the window."""
     c = foam.cell_centres(run, patch)
-    row = lambda z: np.nonzero(np.abs(c[:, 1] - z) < 0.1 * dx)[0]
+    levels = np.unique(np.round(c[:, 1] / (1e-3 * dx)) * (1e-3 * dx))   # the rows' centre heights
+    row = lambda z: np.nonzero(np.abs(c[:, 1] - z) < 1e-2 * dx)[0]
 
     def pairs(z, half=None):
-        lo, hi = row(z - dx / 2), row(z + dx / 2)
+        """The cells of the rows just below and just above z, each lower one with the
+        upper one at its x (staircase: the same x; a fitted mesh's trapezoids: the
+        nearest, within a quarter of the lower row's spacing), and the weight of
+        the upper row in the linear interpolation to z."""
+        below, above = levels[levels < z], levels[levels > z]
+        if not (below.size and above.size):
+            raise CaseError(f"{run}: no cells on both sides of z = {z:g} m")
+        zl, zh = below.max(), above.min()
+        lo, hi = row(zl), row(zh)
         if half is not None:
             lo, hi = lo[np.abs(c[lo, 0]) < half], hi[np.abs(c[hi, 0]) < half]
-        above = {round(x / dx, 3): i for x, i in zip(c[hi, 0], hi)}
-        keep = [(i, above[round(x / dx, 3)]) for x, i in zip(c[lo, 0], lo) if round(x / dx, 3) in above]
+        spacing = np.diff(np.sort(c[lo, 0])).min() if lo.size > 1 else dx
+        keep = []
+        for i in lo:
+            if hi.size:
+                j = hi[np.argmin(np.abs(c[hi, 0] - c[i, 0]))]
+                if abs(c[j, 0] - c[i, 0]) < 0.25 * spacing:
+                    keep.append((i, j))
         if not keep:
             raise CaseError(f"{run}: no cells on both sides of z = {z:g} m")
-        return np.array(keep).T
+        lo, hi = np.array(keep).T
+        return lo, hi, (z - c[lo, 1]) / (c[hi, 1] - c[lo, 1]), c[hi, 1] - c[lo, 1]
 
-    (o_lo, o_hi), (a_lo, a_hi) = pairs(0.0, b / 2), pairs(b)
+    (o_lo, o_hi, o_w, o_h), (a_lo, a_hi, a_w, a_h) = pairs(0.0, b / 2), pairs(b)
     top = np.nonzero(c[:, 1] > c[:, 1].max() - 0.1 * dx)[0]
     rows = []
     for t, d in foam.time_dirs(run):
@@ -338,8 +353,8 @@ def plane_pressures(run, b, dx, t0, t1, rho_f, g, patch="frontAndBack"):
             continue
         p = foam.read_field(os.path.join(d, "p"), len(c))
         p = p - p[top].mean() - rho_f * g * (c[top, 1].mean() - c[:, 1])
-        rows.append([0.5 * (p[o_lo] + p[o_hi]).mean(), ((p[o_hi] - p[o_lo]) / dx).mean(),
-                     0.5 * (p[a_lo] + p[a_hi]).mean(), ((p[a_hi] - p[a_lo]) / dx).mean()])
+        rows.append([(p[o_lo] + o_w * (p[o_hi] - p[o_lo])).mean(), ((p[o_hi] - p[o_lo]) / o_h).mean(),
+                     (p[a_lo] + a_w * (p[a_hi] - p[a_lo])).mean(), ((p[a_hi] - p[a_lo]) / a_h).mean()])
     if not rows:       # a short run (a test) writes no field in its window
         return None
     m = np.array(rows).mean(axis=0)
@@ -487,7 +502,7 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
             # adjustable step is stable, limited by the relative-velocity Courant number.
             for key, value in (("endTime", 2e-4), ("deltaT", 1e-6), ("adjustTimeStep", "no")):
                 foam.set_entry(control, key, value)
-            cpu += runner.run(["twoPhaseEulerFoam"], run_dir, "twoPhaseEulerFoam_startup")
+            cpu += runner.run([values.get("SOLVER", "twoPhaseEulerFoam")], run_dir, "twoPhaseEulerFoam_startup")
             for key, value in (("startFrom", "latestTime"), ("deltaT", 1e-5), ("adjustTimeStep", "yes")):
                 foam.set_entry(control, key, value)
             return {"from": 0.0, "to": 2e-4, "cpu_s": cpu, "what": "mesh and start-up"}
@@ -514,7 +529,7 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
         foam.set_entry(control, "writeInterval", f"{t1 - t0:.10g}")
         print(f"{label}: {t0:g} -> {t1:g} s" + (f" ({n_outer} outer correctors)" if n_outer != values["N_OUTER"] else ""),
               flush=True)
-        cpu = runner.run(["twoPhaseEulerFoam"], run_dir, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
+        cpu = runner.run([values.get("SOLVER", "twoPhaseEulerFoam")], run_dir, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
                          stop_when=None if past_half else lambda: run_end(run_dir, fill_g, until) != (None, None),
                          poll=20.0)
         got = foam.time_dirs(run_dir)[-1][0]
