@@ -17,7 +17,7 @@ One slot width.
                 [--until F] [--fills demo|study]
                 [--dry viscosity|drag] [--outer-until T] [--rheology-from literature|calibration]
                 [--dem-size demo|study] [--rheology-d D] [--rheology muI|latzSchmidt]
-                [--air-mu-factor F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
+                [--air-mu-factor F] [--contact-stiffness F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
                 [--mesh-kind staircase|fitted] [--solver debian|granair]
                 [--out DIR] [--setup-only] [--post-only]
 
@@ -86,6 +86,8 @@ def numbers(a, b_mm, air):
     phi = v["RHO_B"] / P.RHO_P
     dx = b_mm * 1e-3 / a.mesh
     v.update(gc.two_fluid.closure(phi))
+    if a.contact_stiffness != 1.0:     # diagnostic: the contact law's Fr times this
+        v["FR"] *= a.contact_stiffness
     mu_factor, drag_scale = gc.two_fluid.dry(air, a.dry)
     if air:
         mu_factor = a.air_mu_factor
@@ -346,6 +348,9 @@ def main():
     ap.add_argument("--rheology-d", type=float, default=None,
                     help="with the calibration: the grain diameter of I and of the particle phase [m] instead of "
                          "the DEM parcel's (diagnostic, continuum.py --rheology-d)")
+    ap.add_argument("--contact-stiffness", type=float, default=1.0, metavar="F",
+                    help="diagnostic: the muI contact pressure's Fr times F (default 1: 49 Pa at the fill's packing, "
+                         "gc.two_fluid.closure)")
     ap.add_argument("--air-mu-factor", type=float, default=1.0,
                     help="diagnostic: the air run's air viscosity in units of the real one (default 1)")
     a = gc.cli.parse(ap, os.path.join(HERE, "two-fluid-results"))
@@ -354,6 +359,8 @@ def main():
     if a.rheology == "latzSchmidt" and (a.rheology_from != "literature" or a.shear_pressure_phi_max is not None):
         ap.error("--rheology latzSchmidt: the closure is the source paper's (no --rheology-from calibration) "
                  "and has no shear-induced pressure of muI (no --shear-pressure-phi-max)")
+    if not a.contact_stiffness > 0:
+        ap.error(f"--contact-stiffness {a.contact_stiffness:g}: expected a factor > 0")
     if not (a.chunk > 0 and a.end > 0):
         ap.error(f"--chunk {a.chunk:g} / --end {a.end:g}: expected times > 0 [s]")
     if not a.outer_until >= 0:
