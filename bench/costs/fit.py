@@ -31,7 +31,12 @@ Fits, all from the 1-rank runs unless said:
   couple        (void fraction + mapping + exchange) per particle and coupling step
   fixed         the rest of the loop per coupling step (mean over sizes)
   eff2          parallel efficiency at 2 ranks: 1-rank prediction / (2 x measured
-                2-rank loop), at the largest size
+                2-rank loop less its latency), at the largest size
+  latency       seconds per coupling step of an air run at more than one rank that
+                do not shrink with the ranks (the air solver's global reductions,
+                the exchange's messages): the smallest 2-rank air run's loop less
+                its prediction without it, per coupling step (fitted with eff2,
+                twice round)
   memory        per particle: slope of peak RSS with the air on between the two
                 beds of bench/memory (one mesh); per cell and per rank: least
                 squares of the rest over the 1-rank coupled runs.
@@ -96,10 +101,15 @@ def fit(np1, np2, memory):
     t["cfd_s_per_step"], t["cfd_s_per_cell_step"] = max(a, 0.0), b
     t["fixed_s_per_step"] = sum(max(0.0, loop(r) - cpu(r, "dem_s") - cpu(r, "cfd_s") - cpu(r, "mapping_s") -
                                     cpu(r, "exchange_s")) / r["coupling_steps"] for r in on) / len(on)
+    t["latency_s_per_step"] = 0.0
     costs = {"time": t, "parallel_efficiency_2": 1.0, "memory": {"rank_mib": 0.0, "particle_b": 0.0, "cell_b": 0.0}}
-    big2 = max((r for r in np2 if r["air"] == "on"), key=lambda r: r["particles"])
+    on2 = sorted((r for r in np2 if r["air"] == "on"), key=lambda r: r["particles"])
+    big2, small2 = on2[-1], on2[0]
     p1 = cm.predict(costs, as_run(big2), 1)["wall_s"]
-    costs["parallel_efficiency_2"] = p1 / (2 * loop(big2))
+    for _ in range(2):
+        costs["parallel_efficiency_2"] = p1 / (2 * (loop(big2) - t["latency_s_per_step"] * big2["coupling_steps"]))
+        without = cm.predict(costs, as_run(small2), 2)["wall_s"] - t["latency_s_per_step"] * small2["coupling_steps"]
+        t["latency_s_per_step"] = max(0.0, (loop(small2) - without) / small2["coupling_steps"])
     # memory
     mem_on = sorted(memory, key=lambda r: r["particles"])
     lo, hi = mem_on[0], mem_on[-1]
@@ -149,7 +159,8 @@ def main():
         f.write("\n")
     lines = ["# Cost model checked against measured runs", "",
              "Written by `bench/costs/fit.py` (docs/scaling.md). Constants (`costs.json`) fitted to the",
-             "1-rank bench/coupled runs (and the 2-rank efficiency to the largest 2-rank run); predicted",
+             "1-rank bench/coupled runs (the 2-rank efficiency to the largest 2-rank run, the latency per",
+             "coupling step to the smallest); predicted",
              "coupling-loop time against the measured one: the loop's CPU time on the busiest rank (the",
              "wall time with a core per rank; this machine's wall times carry other users' load).", "",
              "| run | ranks | particles | cells | coupling steps | predicted s | measured CPU s | error |",

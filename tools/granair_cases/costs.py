@@ -17,7 +17,11 @@ exchange per particle and coupling step; fixed: the rest of a coupling step:
 monitors, time series, progress). With the air off the cfd and couple terms
 are 0. On R ranks every term is divided by R and by the parallel efficiency
 measured at 2 ranks (the only rank count measured on this machine; R > 2 is
-an extrapolation, see docs/scaling.md). Memory per rank:
+an extrapolation, see docs/scaling.md), and, with the air on, a latency per
+coupling step is added that does not shrink with R (the air solver's global
+reductions and the exchange's messages: what a small coupled run on 2 ranks
+is made of; `latency_s_per_step`, 0 in a costs file fitted before it).
+Memory per rank:
 mem0 + mem_particle * P / R + mem_cell * C / R (peak resident).
 """
 import json
@@ -50,11 +54,12 @@ def predict(costs, run, ranks, calibration=None):
     }
     serial = sum(stages.values())
     eff = 1.0 if ranks == 1 else costs["parallel_efficiency_2"]
-    wall = serial / ranks / eff
+    latency = c.get("latency_s_per_step", 0.0) * s if ranks > 1 and air else 0.0
+    wall = serial / ranks / eff + latency
     m = costs["memory"]
     mem = m["rank_mib"] + (m["particle_b"] * p + m["cell_b"] * cells) / ranks / 2 ** 20
     out = {k_: v / ranks / eff for k_, v in stages.items()}
-    out.update(wall_s=wall, cpu_h=wall * ranks / 3600.0, mem_rank_mib=mem, particle_steps=p * s * k)
+    out.update(latency_s=latency, wall_s=wall, cpu_h=wall * ranks / 3600.0, mem_rank_mib=mem, particle_steps=p * s * k)
     return out
 
 

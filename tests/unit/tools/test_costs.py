@@ -43,6 +43,14 @@ class CostModel(unittest.TestCase):
         self.assertAlmostEqual(p["cpu_h"], 10.215 / 0.8 / 3600, places=12)
         self.assertAlmostEqual(p["mem_rank_mib"], 100 + (1e8 + 5000 * 4096) / 4 / 2 ** 20, places=9)
 
+    def test_latency_per_coupling_step(self):
+        # with the air on and more than one rank: latency x coupling steps, not divided by the ranks
+        lat = {**COSTS, "time": {**COSTS["time"], "latency_s_per_step": 3e-3}}
+        self.assertAlmostEqual(cm.predict(lat, RUN, 4)["wall_s"], 10.215 / 4 / 0.8 + 3e-3 * 10, places=9)
+        self.assertAlmostEqual(cm.predict(lat, RUN, 1)["wall_s"], 10.215, places=9)
+        off = dict(RUN, air=False)
+        self.assertAlmostEqual(cm.predict(lat, off, 2)["wall_s"], cm.predict(COSTS, off, 2)["wall_s"], places=12)
+
     def test_air_off_and_calibration(self):
         off = cm.predict(COSTS, dict(RUN, air=False), 1)
         self.assertAlmostEqual(off["wall_s"], 1e-7 * 1e5 * 500 + 5e-4 * 10, places=9)
