@@ -1,5 +1,5 @@
 """The two-fluid level's runs (Debian's twoPhaseEulerFoam with libgranairTwoFluid.so,
-docs/two-fluid-model.md) on a staircase mesh, shared by cases/wedge-silo/twofluid.py
+docs/two-fluid-model.md) on a staircase mesh (or a body-fitted one with granairTwoPhaseEulerFoam), shared by cases/wedge-silo/twofluid.py
 and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-fluid/template
 (geometry-free but for the values a case fills in).
 
@@ -23,7 +23,10 @@ patch `walls`), fills (setFields) and starts (200 fixed steps of 1 us), each
 later chunk runs the solver from its newest time to the next multiple of
 `chunk`. Why staircase cells: Debian's twoPhaseEulerFoam calls fvc::reconstruct,
 which with Debian's build gives wrong vectors in non-orthogonal cells
-(docs/two-fluid-model.md). The template's function objects give the powder's
+(docs/two-fluid-model.md). values["SOLVER"] = "granairTwoPhaseEulerFoam" runs the
+same solver source built here with that fixed, for a body-fitted mesh (a case's
+topoSetDict then keeps every cell; cases/wedge-silo/twofluid.py --mesh-kind
+fitted); the default is Debian's. The template's function objects give the powder's
 flow through `outlet` and `freefall`, the air pressure at the centres of the
 orifice row's cells and of the row below the orifice plane (`orificePressure`,
 orifice_probes(): dp/dz = the area-weighted mean of their differences / probe_dz,
