@@ -38,7 +38,6 @@ import parameters as P
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TESTS = ("bed", "settling", "consolidation", "packing", "skewed")
-SOLVERS = {"granair": "granairTwoPhaseEulerFoam", "debian": "twoPhaseEulerFoam"}
 # Bad input: (run, what is changed, text the error must contain). Each stops
 # twoPhaseEulerFoam at start-up; the check is that the message names the file,
 # the key and what was expected.
@@ -71,7 +70,7 @@ def setup(out, name, v):
     return run
 
 
-def execute(run, solver="twoPhaseEulerFoam", may_fail=False):
+def execute(run, solver=gc.two_fluid.SOLVERS["debian"], may_fail=False):
     """blockMesh, setFields, the solver (Debian's twoPhaseEulerFoam by default);
     the CPU seconds. may_fail: a solver failure is returned (failed: its message)."""
     cpu = gc.runner.run(["blockMesh"], run, "blockMesh")
@@ -139,11 +138,16 @@ def bed_values(u_s, t_end):
     return values(P.BED, U_S=u_s, T_END=t_end, RHEOLOGY=P.rheology(P.BED, P.BED_FRICTION), T_WRITE=t_end / 10)
 
 
-def ergun_inside(c, name, p, u_s, z, dz, a, pr):
-    """The packed bed's air pressure drop inside the bed (clear of the bottom cell
-    and the surface) against Ergun at the local solid fraction (checked, TOL_ERGUN)."""
+def bed_interior(a):
+    """The first and last cell inside the packed bed, clear of the bottom cell and the surface."""
     inside = np.nonzero(a > 0.5)[0]
-    lo, hi = inside[0] + 2, inside[-1] - 3
+    return inside[0] + 2, inside[-1] - 3
+
+
+def ergun_inside(c, name, p, u_s, z, dz, a, pr):
+    """The packed bed's air pressure drop over bed_interior() against Ergun at the
+    local solid fraction (checked, TOL_ERGUN)."""
+    lo, hi = bed_interior(a)
     eps = 1 - a[lo:hi + 1]
     grad = np.array([gc.closed_forms.ergun_gradient(u_s, e, p["D"], P.RHO_F, P.MU) for e in eps])
     ergun = float(np.sum(0.5 * (grad[1:] + grad[:-1])) * dz) + P.RHO_F * P.G * (z[hi] - z[lo])
@@ -293,20 +297,19 @@ def skewed_analyse(out, c, results):
     rows, dp = [], {}
     for name, solver, skew in skewed_runs():
         res = results.get(name, {})
-        row = dict(run=name, solver=SOLVERS[solver], skewed=int(skew), U_s=u_s)
+        row = dict(run=name, solver=gc.two_fluid.SOLVERS[solver], skewed=int(skew), U_s=u_s)
         if res.get("failed"):
             row.update(failed=res["failed"])
-            print(f"two-fluid-verification: {name} ({SOLVERS[solver]}): failed: {res['failed']}")
+            print(f"two-fluid-verification: {name} ({gc.two_fluid.SOLVERS[solver]}): failed: {res['failed']}")
             rows.append(row)
             continue
         z, dz, series = column(os.path.join(out, "runs", name), p, SKEW_NX if skew else 1)
         t, a, pr, up, ua = series[-1]
-        inside = np.nonzero(a > 0.5)[0]
-        lo, hi = inside[0] + 2, inside[-1] - 3
+        lo, hi = bed_interior(a)
         dp[name] = pr[lo] - pr[hi]
         row.update(dp_inside_Pa=dp[name], max_Up=float(np.abs(up).max()))
         if name == "skewed":
-            row.update(ergun_inside(c, f"{name} ({SOLVERS[solver]}, faces leaning "
+            row.update(ergun_inside(c, f"{name} ({gc.two_fluid.SOLVERS[solver]}, faces leaning "
                                     f"{math.degrees(math.atan(2 * P.SKEW_OFFSET)):.0f} deg)", p, u_s, z, dz, a, pr))
         elif name == "skewed_debian":
             print(f"two-fluid-verification: {name} (Debian's twoPhaseEulerFoam on the skewed cells, reported): "
@@ -532,7 +535,7 @@ def main():
     if "skewed" in tests:
         for name, solver, skew in skewed_runs():
             runs.append((name, bed_values(P.SKEW_FRACTION * P.wen_yu_umf(), P.ERGUN_T_END)))
-            solver_of[name] = (SOLVERS[solver], skew)
+            solver_of[name] = (gc.two_fluid.SOLVERS[solver], skew)
     bad = "bad-input" in a.test
     if bad:
         runs += [(name, bad_input_values(change)) for name, change, _ in BAD_INPUT]
@@ -544,10 +547,16 @@ def main():
         print("two-fluid-verification: run folders in", os.path.join(a.out, "runs"))
         return 0
     bad_names = {name for name, _, _ in BAD_INPUT} if bad else set()
-    res = gc.runner.pool([(name, bad_input_run, (d,)) if name in bad_names else
-                          (name, execute, (d, solver_of[name][0], solver_of[name][0] == SOLVERS["debian"]))
-                          if name in solver_of else (name, execute, (d,)) for name, d in dirs.items()],
-                         a.jobs, "two-fluid-verification")
+    tasks = []
+    for name, d in dirs.items():
+        if name in bad_names:
+            tasks.append((name, bad_input_run, (d,)))
+        elif name in solver_of:     # the skewed test's runs: Debian's may fail (reported)
+            solver = solver_of[name][0]
+            tasks.append((name, execute, (d, solver, solver == gc.two_fluid.SOLVERS["debian"])))
+        else:
+            tasks.append((name, execute, (d,)))
+    res = gc.runner.pool(tasks, a.jobs, "two-fluid-verification")
     c = gc.checks.Checks("two-fluid-verification")
     if bad:
         bad_input_analyse(a.out, c, res)

@@ -6,8 +6,8 @@ granair's muI frictional stress, granair drag (ErgunGidaspow on the lactose's
 Status: b = 10 mm with and without air on meshes b/4, b/6, b/8
 (reference-two-fluid-mesh/, twofluid_mesh.py: no mesh convergence); on
 the continuum's body-fitted mesh (--mesh-kind fitted, granairTwoPhaseEulerFoam)
-the same model discharges 2-4.5x faster than DEM-CFD: the staircase's stair
-walls hold the flow (docs/two-fluid-model.md "The staircase walls hold the flow");
+the same model discharges 1.6-3.5x faster than DEM-CFD and does not converge
+over N = 6-24: the staircase's stair walls hold the flow (docs/two-fluid-model.md "The staircase walls hold the flow");
 reference-two-fluid/ and reference-two-fluid-no-shear-pressure/ are earlier
 b/4 runs from undefined wall values (see run_one); docs/two-fluid-model.md
 "On a silo" gives the measurements and the disagreement with DEM-CFD.
@@ -82,7 +82,7 @@ def numbers(a, b_mm, air):
     if a.mesh_kind == "fitted" and solver == "debian":
         raise gc.CaseError("--mesh-kind fitted needs --solver granair: Debian's twoPhaseEulerFoam reconstructs "
                            "wrong velocities in the fitted mesh's skewed hopper cells (docs/two-fluid-model.md)")
-    v.update(MESH_KIND=a.mesh_kind, SOLVER={"granair": "granairTwoPhaseEulerFoam", "debian": "twoPhaseEulerFoam"}[solver])
+    v.update(MESH_KIND=a.mesh_kind, SOLVER=gc.two_fluid.SOLVERS[solver])
     phi = v["RHO_B"] / P.RHO_P
     dx = b_mm * 1e-3 / a.mesh
     v.update(gc.two_fluid.closure(phi))
@@ -307,7 +307,7 @@ def main():
                     help="post-process the runs in OUT/runs again from their own values.json (no solver, no "
                          "set-up check: runs set up by older code too), e.g. after a change of the post-processing")
     ap.add_argument("--mesh", type=int, default=4, help="cells across the slot (default 4: square cells of b/4)")
-    ap.add_argument("--solver", choices=["debian", "granair"], default=None,
+    ap.add_argument("--solver", choices=sorted(gc.two_fluid.SOLVERS), default=None,
                     help="Debian's /usr/bin/twoPhaseEulerFoam (default on the staircase) or granairTwoPhaseEulerFoam "
                          "(the same source built here with a correct reconstruct; default on the fitted mesh)")
     ap.add_argument("--mesh-kind", choices=["staircase", "fitted"], default="staircase",

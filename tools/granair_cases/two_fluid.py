@@ -53,6 +53,9 @@ DRY_MU_FACTOR = 0.01
 DRY_DRAG_SCALE = 0.01
 # the two ways by name (the cases' --dry), with the words their level texts use
 DRY = {"drag": "dry: drag x 1/100", "viscosity": "dry: air viscosity x 1/100"}
+# The solver binaries by the name a case gives (values["SOLVER"] holds the binary):
+# Debian's, and the same source built here with a reconstruct right on skewed cells
+SOLVERS = {"debian": "twoPhaseEulerFoam", "granair": "granairTwoPhaseEulerFoam"}
 
 
 def dry(air, how):
@@ -474,6 +477,7 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
     T), the template's N_OUTER after; each chunk records its number."""
     control = os.path.join(run_dir, "system", "controlDict")
     solution = os.path.join(run_dir, "system", "fvSolution")
+    solver = values.get("SOLVER", SOLVERS["debian"])
 
     def step(rec):
         if not rec["chunks"]:
@@ -505,7 +509,7 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
             # adjustable step is stable, limited by the relative-velocity Courant number.
             for key, value in (("endTime", 2e-4), ("deltaT", 1e-6), ("adjustTimeStep", "no")):
                 foam.set_entry(control, key, value)
-            cpu += runner.run([values.get("SOLVER", "twoPhaseEulerFoam")], run_dir, "twoPhaseEulerFoam_startup")
+            cpu += runner.run([solver], run_dir, "twoPhaseEulerFoam_startup")
             for key, value in (("startFrom", "latestTime"), ("deltaT", 1e-5), ("adjustTimeStep", "yes")):
                 foam.set_entry(control, key, value)
             return {"from": 0.0, "to": 2e-4, "cpu_s": cpu, "what": "mesh and start-up"}
@@ -532,7 +536,7 @@ def run(run_dir, template_dir, values, end, chunk, label, fill_g, until=0.5, pas
         foam.set_entry(control, "writeInterval", f"{t1 - t0:.10g}")
         print(f"{label}: {t0:g} -> {t1:g} s" + (f" ({n_outer} outer correctors)" if n_outer != values["N_OUTER"] else ""),
               flush=True)
-        cpu = runner.run([values.get("SOLVER", "twoPhaseEulerFoam")], run_dir, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
+        cpu = runner.run([solver], run_dir, f"twoPhaseEulerFoam_{t0:g}-{t1:g}",
                          stop_when=None if past_half else lambda: run_end(run_dir, fill_g, until) != (None, None),
                          poll=20.0)
         got = foam.time_dirs(run_dir)[-1][0]
