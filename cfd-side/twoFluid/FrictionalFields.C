@@ -58,3 +58,24 @@ void Foam::granairTwoFluid::publish
         muField.boundaryFieldRef()[patchi] == rhoP*nuf.boundaryField()[patchi];
     }
 }
+
+
+Foam::surfaceScalarField& Foam::granairTwoFluid::secantRatioField(const Foam::phaseModel& phase)
+{
+    using namespace Foam;
+    const fvMesh& mesh = phase.mesh();
+    const word name(IOobject::groupName("pfSecantRatio", phase.name()));
+    if (!mesh.foundObject<surfaceScalarField>(name))
+    {
+        mesh.objectRegistry::store
+        (
+            new surfaceScalarField
+            (
+                IOobject(name, mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+                mesh,
+                dimensionedScalar("one", dimless, 1.0)
+            )
+        );
+    }
+    return mesh.lookupObjectRef<surfaceScalarField>(name);
+}

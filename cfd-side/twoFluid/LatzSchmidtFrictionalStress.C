@@ -186,6 +186,25 @@ Foam::tmp<Foam::volScalarField> latzSchmidt::frictionalPressurePrime
     const dimensionedScalar& alphaMax
 ) const
 {
+    {
+        // the face ratio of the frictionalPressureSecant scheme (PressureSecant.H)
+        const scalar cMin = alphaMinFriction.value();
+        const scalar rhoP = model_->parameters().rhoP;
+        const tmp<volScalarField> tg = granairTwoFluid::shearRate(phase.U());
+        try
+        {
+            granairTwoFluid::publishSecantRatio
+            (
+                phase, tg(),
+                [&](double c, double g) { return rhoP*pressure(c, g, cMin); },
+                [&](double c, double g) { return rhoP*pressurePrime(c, g, cMin); }
+            );
+        }
+        catch (const ::granair::Error& e)
+        {
+            FatalErrorInFunction << "frictionalStressModel latzSchmidt: " << e.what() << exit(FatalError);
+        }
+    }
     return field
     (
         "latzSchmidt:pfPrime", phase, alphaMinFriction.value(),

@@ -30,6 +30,7 @@ struct PressureLaw
 {
     double Fr, eta, p, delta, alphaMin, alphaMax;
     bool shear;
+    double shearMin;  // p_I's onset in alpha
     double rhoP, d, phiMax, phiMin;
 
     double contact(double a) const
@@ -50,13 +51,13 @@ struct PressureLaw
     }
     double shearInduced(double a, double gammaDot) const
     {
-        if (!shear || a <= alphaMin) return 0;
+        if (!shear || a <= shearMin) return 0;
         const double g = std::max(phiMax - a, delta);
         return rhoP*sqr((phiMax - phiMin)*d*gammaDot)/(g*g);
     }
     double shearInducedPrime(double a, double gammaDot) const
     {
-        if (!shear || a <= alphaMin || phiMax - a <= delta) return 0;
+        if (!shear || a <= shearMin || phiMax - a <= delta) return 0;
         const double g = phiMax - a;
         return 2*rhoP*sqr((phiMax - phiMin)*d*gammaDot)/(g*g*g);
     }
@@ -74,7 +75,8 @@ muI::muI(const Foam::dictionary& dict)
     eta_("eta", dimless, coeffDict_),
     p_("p", dimless, coeffDict_),
     alphaDeltaMin_("alphaDeltaMin", dimless, coeffDict_),
-    shearInduced_(coeffDict_.getOrDefault<Switch>("shearInducedPressure", false))
+    shearInduced_(coeffDict_.getOrDefault<Switch>("shearInducedPressure", false)),
+    shearInducedAlphaMin_(coeffDict_.getOrDefault<scalar>("shearInducedAlphaMin", -1))
 {
     readCoeffs();
 }
@@ -103,6 +105,12 @@ void muI::readCoeffs()
     catch (const ::granair::Error& e)
     {
         granairTwoFluid::fatalFromGranair(coeffDict_, e.what());
+    }
+    if (coeffDict_.found("shearInducedAlphaMin") && !(shearInducedAlphaMin_ > 0 && shearInducedAlphaMin_ < 1))
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "muICoeffs: shearInducedAlphaMin " << shearInducedAlphaMin_
+            << ": expected a solid fraction in (0, 1), the onset of the shear-induced pressure" << exit(FatalIOError);
     }
     if (Fr_.value() <= 0 || eta_.value() < 1 || p_.value() < 0 || alphaDeltaMin_.value() <= 0)
     {
@@ -139,6 +147,7 @@ PressureLaw makeLaw
 (
     const Foam::dimensionedScalar& Fr, const Foam::dimensionedScalar& eta,
     const Foam::dimensionedScalar& p, const Foam::dimensionedScalar& delta, bool shear,
+    Foam::scalar shearMin,
     const Foam::dimensionedScalar& alphaMin, const Foam::dimensionedScalar& alphaMax,
     const granair::MuI& r
 )
@@ -147,7 +156,7 @@ PressureLaw makeLaw
     return PressureLaw
     {
         Fr.value(), eta.value(), p.value(), delta.value(), alphaMin.value(), alphaMax.value(),
-        shear, par.rhoP, par.d, par.phiMax, par.phiMin
+        shear, shearMin < 0 ? alphaMin.value() : shearMin, par.rhoP, par.d, par.phiMax, par.phiMin
     };
 }
 
@@ -163,10 +172,16 @@ Foam::tmp<Foam::volScalarField> muI::pressure
 ) const
 {
     checkPhase(phase);
-    const PressureLaw law = makeLaw(Fr_, eta_, p_, alphaDeltaMin_, shearInduced_, alphaMinFriction, alphaMax, *rheology_);
+    const PressureLaw law = makeLaw(Fr_, eta_, p_, alphaDeltaMin_, shearInduced_, shearInducedAlphaMin_, alphaMinFriction, alphaMax, *rheology_);
     const tmp<volScalarField> tg = granairTwoFluid::shearRate(phase.U());
     if (prime)
     {
+        granairTwoFluid::publishSecantRatio
+        (
+            phase, tg(),
+            [&law](double a, double g) { return law.contact(a) + law.shearInduced(a, g); },
+            [&law](double a, double g) { return law.contactPrime(a) + law.shearInducedPrime(a, g); }
+        );
         return granairTwoFluid::pointwise
         (
             "muI:pfPrime", phase, tg(), dimPressure,
@@ -244,6 +259,7 @@ bool muI::read()
     p_.read(coeffDict_);
     alphaDeltaMin_.read(coeffDict_);
     shearInduced_ = coeffDict_.getOrDefault<Switch>("shearInducedPressure", false);
+    shearInducedAlphaMin_ = coeffDict_.getOrDefault<scalar>("shearInducedAlphaMin", -1);
     readCoeffs();
     return true;
 }

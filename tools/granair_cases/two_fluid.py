@@ -15,6 +15,7 @@ and cases/mcc-hopper/twofluid.py; the dictionaries are cases/wedge-silo/two-flui
     run_end(run_dir, fill_g, until)                              a chunked run's stop: (share out, stalled)
     closure(phi_fill)                                            the frictional closure's numbers
     friction(values)                                             its entry in turbulenceProperties.particles
+    pressure_face(kind)                                          the particle-pressure face entry of fvSchemes
 
 A case writes system/blockMeshDict (its blocks of orthogonal cells) and
 system/topoSetDict (a cellSet `silo` of the cells inside its hopper); the first
@@ -105,8 +106,33 @@ def friction(values, where="two-fluid template"):
     if model not in FRICTION:
         raise CaseError(f"{where}: frictional stress model '{model}' is not one of {sorted(FRICTION)}")
     comment, coeffs = FRICTION[model]
+    if "SHEAR_ALPHA_MIN" in values:
+        if model != "muI":
+            raise CaseError(f"{where}: SHEAR_ALPHA_MIN (p_I's onset) is a muI coefficient, not {model}'s")
+        coeffs += "\n            shearInducedAlphaMin @SHEAR_ALPHA_MIN:.6g@;"
     return template.fill(f"        // {comment}\n        frictionalStressModel   {model};\n        {model}Coeffs\n"
                          f"        {{\n@RHEOLOGY@\n{coeffs}\n        }}", values, where)
+
+
+# How the particle pressure's coefficient pPrime reaches the faces
+# (cfd-side/twoFluid/PressureSecant.H; docs/two-fluid-model.md "The particle
+# pressure across a face"): OpenFOAM's linear interpolation of the cells'
+# derivative (the default, the solver as shipped), the secant of the
+# frictional law between the two cells (the force the pressure's difference),
+# or the smaller cell's value (localMin: a bound, not a model).
+PRESSURE_FACE = {
+    "linear": "",
+    "secant": '"interpolate\\(.*pfPrime.*\\)" frictionalPressureSecant pfSecantRatio.particles;',
+    "localMin": '"interpolate\\(.*pfPrime.*\\)" localMin;',
+}
+
+
+def pressure_face(kind, where="two-fluid template"):
+    """The fvSchemes interpolationSchemes entry (the template's @PRESSURE_FACE@)
+    for the particle-pressure coefficient's face value `kind` (a key of PRESSURE_FACE)."""
+    if kind not in PRESSURE_FACE:
+        raise CaseError(f"{where}: particle-pressure face '{kind}' is not one of {sorted(PRESSURE_FACE)}")
+    return PRESSURE_FACE[kind]
 
 
 def check_p_i_option(ap, option):
@@ -461,7 +487,9 @@ def setup(run_dir, template_dir, values, write_mesh, resume=False):
         template.check_values(path, keep, "rerun without --resume to start again", ignore=("ORIFICE_PROBES",))
         return
     runner.clean(run_dir)
-    template.render(template_dir, run_dir, {**values, "FRICTION": friction(values, template_dir)})
+    template.render(template_dir, run_dir, {**values, "FRICTION": friction(values, template_dir),
+                                            "PRESSURE_FACE": pressure_face(values.get("PRESSURE_FACE_KIND", "linear"),
+                                                                           template_dir)})
     write_mesh(run_dir)
     template.save_values(path, keep)
 

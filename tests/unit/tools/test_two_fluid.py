@@ -6,7 +6,9 @@ put on the same steps (dp/dz = the weighted mean of the orifice probes' differen
 over their distance, a run with the axis pair moved by its snapshots' offset, the
 orifice row's mean), the share-of-fill time, the stall stop, block means that end at the
 blocks' ends, and the air pressure on the orifice plane and one b above it from
-the fields of a hand-made plane mesh (plane_pressures, snapshot_offsets)."""
+the fields of a hand-made plane mesh (plane_pressures, snapshot_offsets); the
+fvSchemes entry of the particle pressure's face value and p_I's onset in the
+frictional coefficients."""
 import os
 import sys
 import tempfile
@@ -169,6 +171,30 @@ moved = two_fluid.p_i_packing(blk, 0.64, 0.15, "test")
 check("p_i_packing: phiMax", two_fluid.calibration.entry(moved, "phiMax"), 0.64)
 check("p_i_packing: phiMin", two_fluid.calibration.entry(moved, "phiMin"), 0.49, tol=1e-9)
 check("p_i_packing: muS kept", two_fluid.calibration.entry(moved, "muS"), 0.4)
+
+# the particle pressure's face entry of fvSchemes: none for linear, the scheme and
+# its published ratio for secant, an unknown kind stops naming the known ones
+if two_fluid.pressure_face("linear") != "":
+    failures.append("pressure_face(linear): expected no entry (twoPhaseEulerFoam's linear)")
+if "frictionalPressureSecant pfSecantRatio.particles;" not in two_fluid.pressure_face("secant"):
+    failures.append(f"pressure_face(secant): {two_fluid.pressure_face('secant')!r}")
+try:
+    two_fluid.pressure_face("harmonic")
+    failures.append("pressure_face(harmonic): expected a CaseError")
+except two_fluid.CaseError as e:
+    if "localMin" not in str(e):
+        failures.append(f"pressure_face(harmonic): the message should name the kinds: {e}")
+# p_I's onset: written into muI's coefficients only when set, refused for Latz-Schmidt
+vals = dict(two_fluid.closure(0.58), RHEOLOGY=blk)
+if "shearInducedAlphaMin" in two_fluid.friction(vals):
+    failures.append("friction: shearInducedAlphaMin written without SHEAR_ALPHA_MIN")
+if "shearInducedAlphaMin 0.45;" not in two_fluid.friction(dict(vals, SHEAR_ALPHA_MIN=0.45)):
+    failures.append("friction: SHEAR_ALPHA_MIN 0.45 not written as shearInducedAlphaMin")
+try:
+    two_fluid.friction(dict(vals, SHEAR_ALPHA_MIN=0.45, FRICTION_MODEL="latzSchmidt"))
+    failures.append("friction: SHEAR_ALPHA_MIN with latzSchmidt: expected a CaseError")
+except two_fluid.CaseError:
+    pass
 
 if failures:
     print("\n".join(failures))
