@@ -121,6 +121,8 @@ LATZ_BLOCK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "wed
                           "latzSchmidt", "rheology")
 PACKING_DEEP = 0.1       # cells compared: overburden >= this share of the base's (not the surface's transition)
 TOL_PACKING = 0.05       # p_y at the cell's packing vs its buoyant overburden
+TOL_REST = 0.01          # the muI contact pressure at rest vs its buoyant overburden (a continuous law)
+REST_T_END = 2.0         # [s]: the column at rest (its creep under etaMax settled)
 
 
 def latz_block():
