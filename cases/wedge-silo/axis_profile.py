@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Two-fluid runs of the wedge silo along the slot's axis: solid fraction,
+"""Two-fluid (and continuum) runs of the wedge silo along the slot's axis: solid fraction,
 the powder's vertical velocity and its frictional pressure against height
 above the orifice, averaged over written times (issue 17's mesh study).
 
     axis_profile.py --run LABEL=RUN_DIR[@T1,T2,...] [--run ...] [--b 10]
-                    [--times 0.5 1 1.5 | --at-mass G1 G2 ...] [--out DIR]
+                    [--times 0.5 1 1.5 | --at-mass G1 G2 ...] [--top 4] [--out DIR]
 
 Why: the calibrated two-fluid's dry rate falls by a quarter from 4 to 6
 cells across the slot at b = 10 mm (README, "At b = 10 mm on b/6") while
@@ -14,7 +14,10 @@ orifice (pf = 0, free fall) or in the dense flow above it.
 
 RUN_DIR is a two-fluid run folder (twofluid.py's OUT/runs/b<B>_air or
 _noair: time folders of alpha.particles, U.particles, pf.particles on an
-ASCII mesh); fields are interpolated linearly between cell centres onto
+ASCII mesh) or a continuum one (continuum.py --write-every's OUT/runs/...:
+alpha.powder times the fill's packing, U, and p as "pf", the powder's
+pressure in a dry run), so the two levels can be set side by side on the
+same mesh; fields are interpolated linearly between cell centres onto
 x = 0 (gc.foam.line_profile) from z = -b/2 to 4b, and averaged over
 --times, over the run's own times after `@`, or (--at-mass) over the
 written times nearest to those at which each run had discharged G1, G2, ...
@@ -23,6 +26,7 @@ free-fall flow files, gc.two_fluid.out_flow). Writes
 DIR/axis_profile.{csv,md,png} (default build/axis-profile).
 """
 import argparse
+import json
 import os
 import sys
 
@@ -36,13 +40,32 @@ FIELDS = ["alpha.particles", "U.particles", "pf.particles"]
 COLUMNS = [("alpha", "alpha.particles"), ("w", "U.particles_z"), ("pf", "pf.particles")]
 
 
+# A continuum run (granairContinuumFoam, continuum.py --write-every): its VOF
+# powder fraction times the fill's packing (silo.json RHO_B / RHO_P), its
+# velocity, and its pressure p, the powder's in a dry run
+CONTINUUM_FIELDS = ["alpha.powder", "U", "p"]
+CONTINUUM_COLUMNS = [("alpha", "alpha.powder"), ("w", "U_z"), ("pf", "p")]
+
+
+def is_continuum(run):
+    """Whether a run folder is the continuum level's (its fields are alpha.powder, U, p)."""
+    return any(os.path.exists(os.path.join(d, "alpha.powder")) for _, d in gc.foam.time_dirs(run))
+
+
 def profile(run, times, z):
-    """{column: mean over times} on the axis at heights z [m]."""
+    """{column: mean over times} on the axis at heights z [m] (a two-fluid or a continuum run)."""
+    continuum = is_continuum(run)
+    fields, columns = (CONTINUUM_FIELDS, CONTINUUM_COLUMNS) if continuum else (FIELDS, COLUMNS)
+    scale = {c: 1.0 for c, _ in COLUMNS}
+    if continuum:
+        with open(os.path.join(run, "silo.json")) as fh:
+            silo = json.load(fh)
+        scale["alpha"] = silo["RHO_B"] / silo["RHO_P"]
     sums = {c: np.zeros_like(z) for c, _ in COLUMNS}
     for t in times:
-        f = gc.foam.line_profile(run, t, FIELDS, [(0.0, zi) for zi in z])
-        for c, key in COLUMNS:
-            sums[c] += f[key]
+        f = gc.foam.line_profile(run, t, fields, [(0.0, zi) for zi in z])
+        for c, key in columns:
+            sums[c] += scale[c] * f[key]
     return {c: v / len(times) for c, v in sums.items()}
 
 
@@ -69,6 +92,7 @@ def main():
     ap.add_argument("--times", type=float, nargs="+", default=[0.5, 1.0, 1.5])
     ap.add_argument("--at-mass", type=float, nargs="+", metavar="G",
                     help="each run's written times nearest to G grams discharged (instead of --times)")
+    ap.add_argument("--top", type=float, default=4.0, help="highest height in slot widths (default 4)")
     ap.add_argument("--out", default=os.path.join(HERE, "..", "..", "build", "axis-profile"))
     a = ap.parse_args()
     runs, times = [], {}
@@ -86,7 +110,7 @@ def main():
             ap.error(f"--run {item}: {e}")
         runs.append((label, path))
     b = a.b * 1e-3
-    z = np.arange(-0.5 * b, 4.0 * b + 1e-12, 0.05 * b)
+    z = np.arange(-0.5 * b, a.top * b + 1e-12, 0.05 * b)
     prof = {label: profile(path, times[label], z) for label, path in runs}
     when = {label: ", ".join(f"{t:g}" for t in times[label]) for label, _ in runs}
 
@@ -98,9 +122,9 @@ def main():
 
     # The table: at the orifice and 1-3 b above it; the arch's top as the
     # lowest height above which pf > 0 all the way up.
-    lines = [f"# Two-fluid runs on the slot's axis, b = {a.b:g} mm", "",
+    lines = [f"# Runs on the slot's axis, b = {a.b:g} mm", "",
              "Written by `axis_profile.py` (its docstring). w: the powder's vertical velocity [m/s]; pf: the "
-             "frictional pressure [Pa]; arch top: the lowest height above which pf > 0; each run's mean over the "
+             "frictional pressure [Pa] (a continuum run's p); arch top: the lowest height above which pf > 0; each run's mean over the "
              "times given.", "",
              "| run | t [s] | arch top [mm] | " + " | ".join(f"alpha, w, pf at z = {k:g} b" for k in (0, 1, 2, 3)) + " |",
              "|---|---|---:|" + "---:|" * 4]
@@ -128,7 +152,7 @@ def main():
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("height above the orifice [mm]")
     axes[0].legend(fontsize=8)
-    fig.suptitle(f"two-fluid runs on the slot's axis, b = {a.b:g} mm")
+    fig.suptitle(f"runs on the slot's axis, b = {a.b:g} mm")
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "axis_profile.png"), dpi=120)
 

@@ -7,7 +7,9 @@ Status: b = 10 mm with and without air on meshes b/4, b/6, b/8
 (reference-two-fluid-mesh/, twofluid_mesh.py: no mesh convergence); on
 the continuum's body-fitted mesh (--mesh-kind fitted, granairTwoPhaseEulerFoam)
 the same model discharges 1.6-3.5x faster than DEM-CFD and does not converge
-over N = 6-24: the staircase's stair walls hold the flow (docs/two-fluid-model.md "The staircase walls hold the flow");
+over N = 6-24: the staircase's stair walls hold the flow (docs/two-fluid-model.md "The staircase walls hold the flow"),
+and its rate there depends on how the particle pressure is put on the faces
+(--pressure-face: 0.14-0.35 kg/s at N = 6; "The particle pressure across a face");
 reference-two-fluid/ and reference-two-fluid-no-shear-pressure/ are earlier
 b/4 runs from undefined wall values (see run_one); docs/two-fluid-model.md
 "On a silo" gives the measurements and the disagreement with DEM-CFD.
@@ -19,6 +21,7 @@ One slot width.
                 [--dem-size demo|study] [--rheology-d D] [--rheology muI|latzSchmidt]
                 [--air-mu-factor F] [--contact-stiffness F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
                 [--mesh-kind staircase|fitted] [--solver debian|granair]
+                [--pressure-face linear|secant|localMin] [--shear-pressure-onset PHI|phiMin]
                 [--out DIR] [--setup-only] [--post-only]
 
 The silo, its fill and the mu(I) block are the continuum level's
@@ -124,6 +127,11 @@ def numbers(a, b_mm, air):
         v["RHEOLOGY"] = gc.two_fluid.p_i_packing(v["RHEOLOGY"], phi_max, span,
                                                  "twofluid.py --shear-pressure-phi-max (span kept)")
         v.update(PHI_MAX=phi_max, PHI_MIN=phi_max - span)
+    # only when not the default, so runs set up before these options resume as they were
+    if a.pressure_face != "linear":
+        v["PRESSURE_FACE_KIND"] = a.pressure_face
+    if a.shear_pressure_onset is not None:
+        v["SHEAR_ALPHA_MIN"] = v["PHI_MIN"] if a.shear_pressure_onset == "phiMin" else float(a.shear_pressure_onset)
     return v
 
 
@@ -239,8 +247,11 @@ def post(run, out, name, v, wall=None):
     law = ("Latz-Schmidt at local equilibrium (tan phi 0.416)" if latz else
            f"{'DEM-calibrated ' if v['RHEOLOGY_FROM'] == 'calibration' else ''}muI (mu_s {v['MU_S']:.3f}"
            + (f", d = {v['D'] * 1e3:.3g} mm in I" if v["RHEOLOGY_FROM"] == "calibration" else "") + ")")
-    pressure = ("" if latz else f"shear-induced pressure (phiMax {v['PHI_MAX']:.4g}), " if v["SHEAR_PRESSURE"] == "on"
-                else "contact pressure only, ")
+    onset = f", from alpha {v['SHEAR_ALPHA_MIN']:.4g}" if "SHEAR_ALPHA_MIN" in v else ""
+    pressure = ("" if latz else f"shear-induced pressure (phiMax {v['PHI_MAX']:.4g}{onset}), "
+                if v["SHEAR_PRESSURE"] == "on" else "contact pressure only, ")
+    if v.get("PRESSURE_FACE_KIND", "linear") != "linear":
+        pressure += f"particle pressure on faces {v['PRESSURE_FACE_KIND']}, "
     air_text = (("air" if v["AIR_MU_FACTOR"] == 1 else f"air at {v['AIR_MU_FACTOR']:g}x viscosity (diagnostic)")
                 if air else {"viscosity": "air at 1/100 viscosity (dry)", "drag": "drag x 1/100 (dry)"}[v["DRY"]])
     gc.levels.write(os.path.join(out, "level.json"), case="wedge-silo", level="two-fluid",
@@ -351,6 +362,15 @@ def main():
     ap.add_argument("--contact-stiffness", type=float, default=1.0, metavar="F",
                     help="diagnostic: the muI contact pressure's Fr times F (default 1: 49 Pa at the fill's packing, "
                          "gc.two_fluid.closure)")
+    ap.add_argument("--pressure-face", choices=sorted(gc.two_fluid.PRESSURE_FACE), default="linear",
+                    help="the particle pressure's coefficient on the faces: linear (default, twoPhaseEulerFoam's: "
+                         "the cells' derivative interpolated), secant (the frictional law's secant between the "
+                         "cells: the force is the pressure's difference) or localMin (a bound); "
+                         "docs/two-fluid-model.md \"The particle pressure across a face\"")
+    ap.add_argument("--shear-pressure-onset", default=None, metavar="PHI|phiMin",
+                    help="p_I's onset in alpha (muICoeffs shearInducedAlphaMin): a solid fraction, or phiMin (the "
+                         "rheology's, after --shear-pressure-phi-max); default alphaMinFriction, with the contact "
+                         "pressure's")
     ap.add_argument("--air-mu-factor", type=float, default=1.0,
                     help="diagnostic: the air run's air viscosity in units of the real one (default 1)")
     a = gc.cli.parse(ap, os.path.join(HERE, "two-fluid-results"))
@@ -368,6 +388,15 @@ def main():
     if not 0 < a.until <= 1:
         ap.error(f"--until {a.until:g}: expected a share of the fill in (0, 1]")
     gc.two_fluid.check_p_i_option(ap, a.shear_pressure_phi_max)
+    if a.shear_pressure_onset not in (None, "phiMin"):
+        try:
+            ok = 0 < float(a.shear_pressure_onset) < 1
+        except ValueError:
+            ok = False
+        if not ok:
+            ap.error(f"--shear-pressure-onset {a.shear_pressure_onset}: expected 0 < PHI < 1 or phiMin")
+    if a.shear_pressure_onset is not None and (a.rheology != "muI" or a.shear_pressure == "off"):
+        ap.error("--shear-pressure-onset: p_I's onset needs --rheology muI with --shear-pressure on")
     airs = {"on": [True], "off": [False], "both": [True, False]}[a.air]
     tasks = [(f"b{b}_{'air' if x else 'noair'}", run_one, (a, b, x)) for b in (a.b or [10]) for x in airs]
     res = gc.runner.pool(tasks, 2, "wedge-silo two-fluid")
