@@ -21,7 +21,7 @@ One slot width.
                 [--dem-size demo|study] [--rheology-d D] [--rheology muI|latzSchmidt]
                 [--air-mu-factor F] [--contact-stiffness F] [--shear-pressure on|off] [--shear-pressure-phi-max PHI]
                 [--mesh-kind staircase|fitted] [--solver debian|granair]
-                [--pressure-face linear|secant|localMin] [--shear-pressure-onset PHI|phiMin]
+                [--pressure-face linear|secant|localMin] [--shear-pressure-onset PHI|phiMin] [--contact-onset DPHI]
                 [--out DIR] [--setup-only] [--post-only]
 
 The silo, its fill and the mu(I) block are the continuum level's
@@ -91,6 +91,13 @@ def numbers(a, b_mm, air):
     v.update(gc.two_fluid.closure(phi))
     if a.contact_stiffness != 1.0:     # diagnostic: the contact law's Fr times this
         v["FR"] *= a.contact_stiffness
+    if a.contact_onset is not None:
+        # diagnostic: the contact pressure's onset moved to this far below the fill's
+        # packing, Fr scaled by (0.01 / gap)^eta so the fill's pressure stays
+        # (p_c = Fr (alpha - alphaMin)^eta / (alphaMax - alpha)^p)
+        old_gap = phi - v["ALPHA_MIN_FRICTION"]
+        v["FR"] *= (old_gap / a.contact_onset) ** v["FR_ETA"]
+        v["ALPHA_MIN_FRICTION"] = phi - a.contact_onset
     mu_factor, drag_scale = gc.two_fluid.dry(air, a.dry)
     if air:
         mu_factor = a.air_mu_factor
@@ -371,6 +378,9 @@ def main():
                     help="p_I's onset in alpha (muICoeffs shearInducedAlphaMin): a solid fraction, or phiMin (the "
                          "rheology's, after --shear-pressure-phi-max); default alphaMinFriction, with the contact "
                          "pressure's")
+    ap.add_argument("--contact-onset", type=float, default=None, metavar="DPHI",
+                    help="diagnostic: the contact pressure's onset alphaMinFriction DPHI below the fill's packing "
+                         "(default 0.01, gc.two_fluid.closure), its Fr scaled to keep the fill's pressure")
     ap.add_argument("--air-mu-factor", type=float, default=1.0,
                     help="diagnostic: the air run's air viscosity in units of the real one (default 1)")
     a = gc.cli.parse(ap, os.path.join(HERE, "two-fluid-results"))
@@ -379,6 +389,8 @@ def main():
     if a.rheology == "latzSchmidt" and (a.rheology_from != "literature" or a.shear_pressure_phi_max is not None):
         ap.error("--rheology latzSchmidt: the closure is the source paper's (no --rheology-from calibration) "
                  "and has no shear-induced pressure of muI (no --shear-pressure-phi-max)")
+    if a.contact_onset is not None and not 0 < a.contact_onset < 0.2:
+        ap.error(f"--contact-onset {a.contact_onset:g}: expected 0 < DPHI < 0.2 below the fill's packing")
     if not a.contact_stiffness > 0:
         ap.error(f"--contact-stiffness {a.contact_stiffness:g}: expected a factor > 0")
     if not (a.chunk > 0 and a.end > 0):
