@@ -60,6 +60,23 @@ void Foam::granairTwoFluid::publish
 }
 
 
+bool Foam::granairTwoFluid::secantRequested(const Foam::fvMesh& mesh)
+{
+    using namespace Foam;
+    const dictionary* schemes = mesh.schemesDict().findDict("interpolationSchemes");
+    if (!schemes) return false;
+    for (const entry& e : *schemes)
+    {
+        if (e.isStream())
+        {
+            const ITstream& is = e.stream();
+            if (is.size() && is[0].isWord() && is[0].wordToken() == "frictionalPressureSecant") return true;
+        }
+    }
+    return false;
+}
+
+
 Foam::surfaceScalarField& Foam::granairTwoFluid::secantRatioField(const Foam::phaseModel& phase)
 {
     using namespace Foam;

@@ -186,6 +186,7 @@ Foam::tmp<Foam::volScalarField> latzSchmidt::frictionalPressurePrime
     const dimensionedScalar& alphaMax
 ) const
 {
+    if (granairTwoFluid::secantRequested(phase.mesh()))
     {
         // the face ratio of the frictionalPressureSecant scheme (PressureSecant.H)
         const scalar cMin = alphaMinFriction.value();

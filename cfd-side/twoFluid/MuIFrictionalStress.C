@@ -174,25 +174,14 @@ Foam::tmp<Foam::volScalarField> muI::pressure
     checkPhase(phase);
     const PressureLaw law = makeLaw(Fr_, eta_, p_, alphaDeltaMin_, shearInduced_, shearInducedAlphaMin_, alphaMinFriction, alphaMax, *rheology_);
     const tmp<volScalarField> tg = granairTwoFluid::shearRate(phase.U());
+    const auto pf = [&law](double a, double g) { return law.contact(a) + law.shearInduced(a, g); };
+    const auto pfPrime = [&law](double a, double g) { return law.contactPrime(a) + law.shearInducedPrime(a, g); };
     if (prime)
     {
-        granairTwoFluid::publishSecantRatio
-        (
-            phase, tg(),
-            [&law](double a, double g) { return law.contact(a) + law.shearInduced(a, g); },
-            [&law](double a, double g) { return law.contactPrime(a) + law.shearInducedPrime(a, g); }
-        );
-        return granairTwoFluid::pointwise
-        (
-            "muI:pfPrime", phase, tg(), dimPressure,
-            [&law](double a, double g) { return law.contactPrime(a) + law.shearInducedPrime(a, g); }
-        );
+        granairTwoFluid::publishSecantRatio(phase, tg(), pf, pfPrime);
+        return granairTwoFluid::pointwise("muI:pfPrime", phase, tg(), dimPressure, pfPrime);
     }
-    return granairTwoFluid::pointwise
-    (
-        "muI:pf", phase, tg(), dimPressure,
-        [&law](double a, double g) { return law.contact(a) + law.shearInduced(a, g); }
-    );
+    return granairTwoFluid::pointwise("muI:pf", phase, tg(), dimPressure, pf);
 }
 
 

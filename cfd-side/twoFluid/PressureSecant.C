@@ -60,8 +60,8 @@ Foam::frictionalPressureSecant::correction(const volScalarField& vf) const
     {
         FatalErrorInFunction
             << "fvSchemes: frictionalPressureSecant (interpolating " << vf.name() << ") needs the face field '"
-            << ratioName_ << "', not registered: the frictionalStressModel muI publishes pfSecantRatio.<phase>"
-            << " (kineticTheoryCoeffs frictionalStressModel muI)" << exit(FatalError);
+            << ratioName_ << "', not registered: the frictionalStressModels muI and latzSchmidt publish"
+            << " pfSecantRatio.<phase> (kineticTheoryCoeffs frictionalStressModel)" << exit(FatalError);
     }
     const surfaceScalarField& ratio = mesh.lookupObject<surfaceScalarField>(ratioName_);
     if (debug)
